@@ -1,0 +1,199 @@
+//! Turning the constraints of one group into equations.
+
+use super::refs::{Ent, Frame, Locals, PointRef, Resolver};
+use super::{EqKind, Equation, Owner};
+use crate::error::ModelError;
+use crate::model::{Constraint, ConstraintKind, EntityKind, GroupId, ObjectId, PlaneRule, System};
+
+/// An equation ready for the solver.
+#[derive(Clone, Debug)]
+pub(crate) enum Compiled {
+    /// Parameter `a` equals parameter `b` (positions in [`System::params`]).
+    Equal { owner: Owner, a: usize, b: usize },
+    /// Parameter `p` equals `value`.
+    Fix { owner: Owner, p: usize, value: f64 },
+    /// General residuals.
+    Kernel(Kernel),
+}
+
+/// General residuals over a few parameters.
+#[derive(Clone, Debug)]
+pub(crate) struct Kernel {
+    pub owner: Owner,
+    /// Positions in [`System::params`] of the local slots.
+    pub locals: Vec<u32>,
+    pub eq: Equation,
+    pub rows: usize,
+}
+
+impl Kernel {
+    /// Gathers the local slot values from all parameter values.
+    pub fn gather(&self, values: &[f64], x: &mut Vec<f64>) {
+        x.clear();
+        x.extend(self.locals.iter().map(|&p| values[p as usize]));
+    }
+}
+
+/// Compiles every constraint of `group` and the implicit equations of its entities, reading
+/// `values` (one per parameter, in [`System::params`] order) to pick branches.
+pub(crate) fn compile_group(sys: &System, group: GroupId, values: &[f64]) -> Result<Vec<Compiled>, ModelError> {
+    let r = Resolver { sys };
+    let mut out = Vec::new();
+    let mut x = Vec::new();
+    for c in sys.constraints() {
+        if c.group != group || c.reference {
+            continue;
+        }
+        compile_constraint(&r, c, values, &mut x, &mut out)?;
+    }
+    for e in sys.entities() {
+        if e.group != group {
+            continue;
+        }
+        let kind = match e.kind {
+            EntityKind::NormalIn3d { .. } => EqKind::UnitQuaternion,
+            EntityKind::ArcOfCircle { .. } => EqKind::ArcRadii,
+            _ => continue,
+        };
+        let mut l = Locals::default();
+        let ent = r.entity(ObjectId::Entity(e.h), e.h, &mut l)?;
+        let eq = Equation {
+            kind,
+            wp: None,
+            pts: [None, None],
+            ents: vec![ent],
+            val: 0.0,
+            other: false,
+            other2: false,
+            choice: 0,
+            target: [0.0; 3],
+        };
+        out.push(kernel(Owner::Entity(e.h), l, eq, values, &mut x));
+    }
+    Ok(out)
+}
+
+fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec<f64>) -> Compiled {
+    x.clear();
+    x.extend(l.params.iter().map(|&p| values[p as usize]));
+    eq.choose(x);
+    if eq.kind == EqKind::Constraint(ConstraintKind::WhereDragged) {
+        let g = super::refs::Geo { x: &x[..] };
+        let p = g.at(eq.pt(0), eq.wp());
+        eq.target = [p.x, p.y, p.z];
+    }
+    let rows = eq.rows(x);
+    Compiled::Kernel(Kernel { owner, locals: l.params, eq, rows })
+}
+
+/// Resolves a constraint without substitution: the equation and its locals.
+pub(crate) fn resolve_constraint(r: &Resolver<'_>, c: &Constraint) -> Result<(Equation, Locals), ModelError> {
+    let owner = ObjectId::Constraint(c.h);
+    let mut l = Locals::default();
+    let sig = c.kind.signature();
+    let wp = match (sig.plane, c.workplane) {
+        (PlaneRule::Ignored, _) | (_, None) => None,
+        (_, Some(h)) => match r.entity(owner, h, &mut l)? {
+            Ent::Workplane(f) => Some(f),
+            _ => {
+                return Err(ModelError::MissingField { owner, field: "workplane", expected: "a workplane" });
+            }
+        },
+    };
+    if sig.plane == PlaneRule::Required && wp.is_none() {
+        return Err(ModelError::NeedsWorkplane { constraint: c.h, kind: c.kind });
+    }
+    let mut pts = [None, None];
+    for (slot, h) in pts.iter_mut().zip([c.pt_a, c.pt_b]) {
+        if let Some(h) = h {
+            match r.entity(owner, h, &mut l)? {
+                Ent::Point(p) => *slot = Some(p),
+                _ => {
+                    return Err(ModelError::MissingField { owner, field: "pt_a/pt_b", expected: "a point" });
+                }
+            }
+        }
+    }
+    let mut ents = Vec::new();
+    for h in [c.entity_a, c.entity_b, c.entity_c, c.entity_d].into_iter().flatten() {
+        ents.push(r.entity(owner, h, &mut l)?);
+    }
+    let eq = Equation {
+        kind: EqKind::Constraint(c.kind),
+        wp,
+        pts,
+        ents,
+        val: c.val,
+        other: c.other,
+        other2: c.other2,
+        choice: 0,
+        target: [0.0; 3],
+    };
+    Ok((eq, l))
+}
+
+fn compile_constraint(
+    r: &Resolver<'_>,
+    c: &Constraint,
+    values: &[f64],
+    x: &mut Vec<f64>,
+    out: &mut Vec<Compiled>,
+) -> Result<(), ModelError> {
+    let (eq, l) = resolve_constraint(r, c)?;
+    let owner = Owner::Constraint(c.h);
+    let p = |s: u16| l.params[s as usize] as usize;
+    // Native coordinates: the parameters themselves are the coordinates the constraint is
+    // written in, so `a = b` equations can be removed by merging parameters.
+    let native = |pt: &PointRef, wp: Option<&Frame>| -> Option<Vec<u16>> {
+        match (pt, wp) {
+            (PointRef::P3(s), None) => Some(s.to_vec()),
+            (PointRef::P2 { wp: own, uv }, Some(f)) if own.id == f.id => Some(uv.to_vec()),
+            _ => None,
+        }
+    };
+    use ConstraintKind as K;
+    match c.kind {
+        K::PointsCoincident => {
+            if let (Some(a), Some(b)) = (native(eq.pt(0), eq.wp()), native(eq.pt(1), eq.wp())) {
+                for (sa, sb) in a.into_iter().zip(b) {
+                    out.push(Compiled::Equal { owner, a: p(sa), b: p(sb) });
+                }
+                return Ok(());
+            }
+        }
+        K::Horizontal | K::Vertical => {
+            let (pa, pb) = match eq.ents.first() {
+                Some(Ent::Line(line)) => (line[0], line[1]),
+                _ => (*eq.pt(0), *eq.pt(1)),
+            };
+            if let (Some(a), Some(b)) = (native(&pa, eq.wp()), native(&pb, eq.wp())) {
+                let i = if c.kind == K::Horizontal { 1 } else { 0 };
+                out.push(Compiled::Equal { owner, a: p(a[i]), b: p(b[i]) });
+                return Ok(());
+            }
+        }
+        K::WhereDragged => {
+            if let Some(a) = native(eq.pt(0), eq.wp()) {
+                for s in a {
+                    out.push(Compiled::Fix { owner, p: p(s), value: values[p(s)] });
+                }
+                return Ok(());
+            }
+        }
+        K::EqualRadius => {
+            if let (Ent::Circle { radius: ra, .. }, Ent::Circle { radius: rb, .. }) = (eq.ent(0), eq.ent(1)) {
+                out.push(Compiled::Equal { owner, a: p(*ra), b: p(*rb) });
+                return Ok(());
+            }
+        }
+        K::Diameter => {
+            if let Ent::Circle { radius, .. } = eq.ent(0) {
+                out.push(Compiled::Fix { owner, p: p(*radius), value: c.val / 2.0 });
+                return Ok(());
+            }
+        }
+        _ => {}
+    }
+    out.push(kernel(owner, l, eq, values, x));
+    Ok(())
+}

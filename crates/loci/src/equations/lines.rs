@@ -1,0 +1,187 @@
+//! Lines: distances from points to lines, lengths, angles, parallel and perpendicular.
+
+use super::points::{dominant_axis, push_two};
+use super::refs::{Frame, Geo, PointRef};
+use super::{Equation, Rows};
+use crate::geom::{Scalar, Vec3};
+
+/// Distance from `p` to the line through `l`: signed in a workplane (positive to the left of
+/// start→end, i.e. above a rightward line), unsigned in space.
+fn pt_line<S: Scalar>(g: &Geo<S>, p: &PointRef, l: &[PointRef; 2], w: Option<&Frame>) -> S {
+    let a = g.at(&l[0], w);
+    let d = g.at(&l[1], w).minus(a);
+    let c = d.cross(g.at(p, w).minus(a));
+    match w {
+        Some(_) => c.z / d.norm(),
+        None => c.norm() / d.norm(),
+    }
+}
+
+/// Unsigned distance from `p` to line `l`.
+fn pt_line_abs<S: Scalar>(g: &Geo<S>, p: &PointRef, l: &[PointRef; 2], w: Option<&Frame>) -> S {
+    let a = g.at(&l[0], w);
+    let d = g.at(&l[1], w).minus(a);
+    d.cross(g.at(p, w).minus(a)).norm() / d.norm()
+}
+
+fn length<S: Scalar>(g: &Geo<S>, l: &[PointRef; 2], w: Option<&Frame>) -> S {
+    g.line_dir(l, w).norm()
+}
+
+/// Distance from `pt_a` to line `entity_a` is `val`.
+pub(super) fn pt_line_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    out.push(pt_line(g, e.pt(0), e.line(0), e.wp()) - e.val);
+}
+
+pub(super) fn choose_pt_on_line(e: &Equation, g: &Geo<f64>) -> u8 {
+    dominant_axis(g.line_dir(e.line(0), None))
+}
+
+/// `pt_a` lies on line `entity_a`: one row in a workplane, two in space.
+pub(super) fn pt_on_line<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let w = e.wp();
+    let l = e.line(0);
+    let a = g.at(&l[0], w);
+    let d = g.at(&l[1], w).minus(a);
+    let c = d.cross(g.at(e.pt(0), w).minus(a)).scale(S::cst(1.0) / d.norm());
+    match w {
+        Some(_) => out.push(c.z),
+        None => push_two(c, e.choice, out),
+    }
+}
+
+/// How the lengths of two lines relate.
+pub(super) enum Relation {
+    Equal,
+    Ratio,
+    Difference,
+}
+
+/// `|A| = |B|`, `|A| = val |B|` or `|A| - |B| = val`.
+pub(super) fn length_relation<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>, rel: Relation) {
+    let (a, b) = (length(g, e.line(0), e.wp()), length(g, e.line(1), e.wp()));
+    out.push(match rel {
+        Relation::Equal => a - b,
+        Relation::Ratio => a - b * e.val,
+        Relation::Difference => a - b - e.val,
+    });
+}
+
+/// The length of line `entity_a` equals the distance from `pt_a` to line `entity_b`.
+pub(super) fn eq_len_pt_line_d<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let w = e.wp();
+    out.push(length(g, e.line(0), w) - pt_line_abs(g, e.pt(0), e.line(1), w));
+}
+
+/// Distance `pt_a`–line `entity_a` equals distance `pt_b`–line `entity_b`.
+pub(super) fn eq_pt_ln_distances<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let w = e.wp();
+    out.push(pt_line_abs(g, e.pt(0), e.line(0), w) - pt_line_abs(g, e.pt(1), e.line(1), w));
+}
+
+/// (cos, sin) of the angle from `a` to `b` (sin signed in a workplane, else non-negative).
+fn cos_sin<S: Scalar>(a: Vec3<S>, b: Vec3<S>, planar: bool) -> (S, S) {
+    let inv = S::cst(1.0) / (a.norm() * b.norm());
+    let c = a.cross(b);
+    let s = if planar { c.z } else { c.norm() };
+    (a.dot(b) * inv, s * inv)
+}
+
+fn dirs<S: Scalar>(e: &Equation, g: &Geo<S>, i: usize, j: usize) -> (Vec3<S>, Vec3<S>) {
+    (g.line_dir(e.line(i), e.wp()), g.line_dir(e.line(j), e.wp()))
+}
+
+/// The target angle in radians, with `other` meaning the supplement.
+fn target(e: &Equation) -> f64 {
+    let t = e.val.to_radians();
+    if e.other {
+        std::f64::consts::PI - t
+    } else {
+        t
+    }
+}
+
+pub(super) fn choose_angle(e: &Equation, g: &Geo<f64>) -> u8 {
+    if e.wp.is_none() {
+        return 0;
+    }
+    let (a, b) = dirs(e, g, 0, 1);
+    u8::from(a.cross(b).z < 0.0)
+}
+
+/// The angle between lines `entity_a` and `entity_b` is `val` degrees.
+///
+/// In space this is SolveSpace's `cos(angle) = cos(val)`. In a workplane the angle keeps the
+/// sign it starts with and the residual is `sin(angle - val)`, which has the same solutions
+/// near the start but stays well conditioned at 0 and 180 degrees, where `cos` is flat.
+pub(super) fn angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let (a, b) = dirs(e, g, 0, 1);
+    let t = target(e);
+    match e.wp {
+        None => out.push(cos_sin(a, b, false).0 - t.cos()),
+        Some(_) => {
+            let t = if e.choice == 1 { -t } else { t };
+            let (c, s) = cos_sin(a, b, true);
+            out.push(s * t.cos() - c * t.sin());
+        }
+    }
+}
+
+pub(super) fn choose_equal_angle(e: &Equation, g: &Geo<f64>) -> u8 {
+    if e.wp.is_none() {
+        return 0;
+    }
+    let mut best = (f64::INFINITY, 0);
+    for choice in 0..2u8 {
+        let mut r = Rows::new();
+        let mut t = e.clone();
+        t.choice = choice;
+        equal_angle(&t, g, &mut r);
+        if r.v[0].abs() < best.0 {
+            best = (r.v[0].abs(), choice);
+        }
+    }
+    best.1
+}
+
+/// angle(A, B) = angle(C, D), or supplementary with `other`.
+///
+/// In space: `cos1 = cos2` (or `cos1 = -cos2`). In a workplane, with signed angles a1, a2 and a
+/// sign s fixed from the start: `sin(a1 - s a2) = 0` (or `sin(a1 + s a2) = 0` for supplementary).
+pub(super) fn equal_angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let (a, b) = dirs(e, g, 0, 1);
+    let (c, d) = dirs(e, g, 2, 3);
+    match e.wp {
+        None => {
+            let (c1, c2) = (cos_sin(a, b, false).0, cos_sin(c, d, false).0);
+            out.push(if e.other { c1 + c2 } else { c1 - c2 });
+        }
+        Some(_) => {
+            let (c1, s1) = cos_sin(a, b, true);
+            let (c2, s2) = cos_sin(c, d, true);
+            let s2 = if (e.choice == 1) != e.other { -s2 } else { s2 };
+            // sin(a1 - a2') with a2' = +-a2
+            out.push(s1 * c2 - c1 * s2);
+        }
+    }
+}
+
+pub(super) fn choose_parallel(e: &Equation, g: &Geo<f64>) -> u8 {
+    dominant_axis(g.line_dir(e.line(0), None))
+}
+
+/// Lines `entity_a` and `entity_b` are parallel: one row in a workplane, two in space.
+pub(super) fn parallel<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let (a, b) = dirs(e, g, 0, 1);
+    let c = a.cross(b).scale(S::cst(1.0) / (a.norm() * b.norm()));
+    match e.wp {
+        Some(_) => out.push(c.z),
+        None => push_two(c, e.choice, out),
+    }
+}
+
+/// Lines `entity_a` and `entity_b` are perpendicular.
+pub(super) fn perpendicular<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let (a, b) = dirs(e, g, 0, 1);
+    out.push(cos_sin(a, b, e.wp.is_some()).0);
+}

@@ -1,0 +1,222 @@
+//! Equations: each constraint (and each entity with an implicit condition) becomes residuals
+//! `r(x) = 0` written once over [`Scalar`], so that the same code gives values (`f64`) and
+//! exact derivatives ([`Dual`]).
+//!
+//! Families: [`points`] (coincidence, distances to points and planes, symmetry, horizontal and
+//! vertical), [`lines`] (distances to lines, lengths, angles), [`circles`] (radii, arcs,
+//! tangency to arcs), [`curves`] (cubics), [`orientation`] (normals).
+
+mod circles;
+mod compile;
+mod curves;
+mod lines;
+mod orientation;
+mod points;
+pub(crate) mod refs;
+
+pub(crate) use compile::{compile_group, Compiled, Kernel};
+use refs::{Ent, Frame, Geo, PointRef};
+
+use crate::geom::{Dual, Scalar};
+use crate::model::{ConstraintId, ConstraintKind, EntityId};
+
+/// Who an equation belongs to: a constraint, or an entity's implicit condition.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(crate) enum Owner {
+    Constraint(ConstraintId),
+    Entity(EntityId),
+}
+
+/// What an equation says.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum EqKind {
+    Constraint(ConstraintKind),
+    /// A quaternion has unit length.
+    UnitQuaternion,
+    /// An arc's start and end are equally far from its centre.
+    ArcRadii,
+}
+
+/// A constraint resolved against the model, ready to evaluate.
+#[derive(Clone, Debug)]
+pub(crate) struct Equation {
+    pub kind: EqKind,
+    pub wp: Option<Frame>,
+    pub pts: [Option<PointRef>; 2],
+    pub ents: Vec<Ent>,
+    pub val: f64,
+    pub other: bool,
+    pub other2: bool,
+    /// A branch chosen from the starting configuration (which components of a cross product to
+    /// keep, which sign an angle has ...), so that the equations stay well conditioned.
+    pub choice: u8,
+    /// For `where_dragged`: the position the point must keep.
+    pub target: [f64; 3],
+}
+
+/// Up to four residuals, written by an equation.
+pub(crate) struct Rows<S> {
+    pub v: [S; 4],
+    pub n: usize,
+}
+
+impl<S: Scalar> Rows<S> {
+    pub fn new() -> Self {
+        Self { v: [S::cst(0.0); 4], n: 0 }
+    }
+
+    #[inline]
+    pub fn push(&mut self, r: S) {
+        if self.n < 4 {
+            self.v[self.n] = r;
+            self.n += 1;
+        }
+    }
+}
+
+impl Equation {
+    pub fn pt(&self, i: usize) -> &PointRef {
+        // Validation guarantees the fields a kind uses are present.
+        self.pts[i].as_ref().expect("validated: point field present")
+    }
+
+    pub fn ent(&self, i: usize) -> &Ent {
+        &self.ents[i]
+    }
+
+    pub fn line(&self, i: usize) -> &[PointRef; 2] {
+        match &self.ents[i] {
+            Ent::Line(l) => l,
+            _ => unreachable!("validated: line field"),
+        }
+    }
+
+    pub fn frame(&self, i: usize) -> &Frame {
+        match &self.ents[i] {
+            Ent::Workplane(f) => f,
+            _ => unreachable!("validated: workplane field"),
+        }
+    }
+
+    pub fn wp(&self) -> Option<&Frame> {
+        self.wp.as_ref()
+    }
+
+    /// Writes the residuals at `x` (local slot values).
+    pub fn eval<S: Scalar>(&self, x: &[S], out: &mut Rows<S>) {
+        let g = Geo { x };
+        use ConstraintKind as K;
+        let k = match self.kind {
+            EqKind::UnitQuaternion => return orientation::unit_quaternion(self, &g, out),
+            EqKind::ArcRadii => return circles::arc_radii(self, &g, out),
+            EqKind::Constraint(k) => k,
+        };
+        match k {
+            K::PointsCoincident => points::coincident(self, &g, out),
+            K::PtPtDistance => points::pt_pt_distance(self, &g, out),
+            K::PtPlaneDistance | K::PtFaceDistance => points::pt_plane_distance(self, &g, out),
+            K::PtInPlane | K::PtOnFace => points::pt_in_plane(self, &g, out),
+            K::WhereDragged => points::where_dragged(self, &g, out),
+            K::ProjPtDistance => points::proj_pt_distance(self, &g, out),
+            K::Symmetric => points::symmetric(self, &g, out),
+            K::SymmetricHoriz => points::symmetric_axis(self, &g, out, true),
+            K::SymmetricVert => points::symmetric_axis(self, &g, out, false),
+            K::SymmetricLine => points::symmetric_line(self, &g, out),
+            K::AtMidpoint => points::at_midpoint(self, &g, out),
+            K::Horizontal => points::horizontal_vertical(self, &g, out, true),
+            K::Vertical => points::horizontal_vertical(self, &g, out, false),
+            K::PtLineDistance => lines::pt_line_distance(self, &g, out),
+            K::PtOnLine => lines::pt_on_line(self, &g, out),
+            K::EqualLengthLines => lines::length_relation(self, &g, out, lines::Relation::Equal),
+            K::LengthRatio => lines::length_relation(self, &g, out, lines::Relation::Ratio),
+            K::LengthDifference => lines::length_relation(self, &g, out, lines::Relation::Difference),
+            K::EqLenPtLineD => lines::eq_len_pt_line_d(self, &g, out),
+            K::EqPtLnDistances => lines::eq_pt_ln_distances(self, &g, out),
+            K::EqualAngle => lines::equal_angle(self, &g, out),
+            K::Angle => lines::angle(self, &g, out),
+            K::Parallel => lines::parallel(self, &g, out),
+            K::Perpendicular => lines::perpendicular(self, &g, out),
+            K::Diameter => circles::diameter(self, &g, out),
+            K::PtOnCircle => circles::pt_on_circle(self, &g, out),
+            K::EqualRadius => circles::equal_radius(self, &g, out),
+            K::EqualLineArcLen => circles::arc_length_relation(self, &g, out, circles::ArcRel::LineEqual),
+            K::ArcArcLenRatio => circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcArcRatio),
+            K::ArcLineLenRatio => circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcLineRatio),
+            K::ArcArcDifference => circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcArcDiff),
+            K::ArcLineDifference => circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcLineDiff),
+            K::ArcLineTangent => circles::arc_line_tangent(self, &g, out),
+            K::CubicLineTangent => curves::cubic_line_tangent(self, &g, out),
+            K::CurveCurveTangent => curves::curve_curve_tangent(self, &g, out),
+            K::SameOrientation => orientation::same_orientation(self, &g, out),
+        }
+    }
+
+    /// Picks the branch for kinds whose equations depend on the starting configuration.
+    pub fn choose(&mut self, x: &[f64]) {
+        let g = Geo { x };
+        use ConstraintKind as K;
+        self.choice = match self.kind {
+            EqKind::Constraint(K::Parallel) => lines::choose_parallel(self, &g),
+            EqKind::Constraint(K::PtOnLine) => lines::choose_pt_on_line(self, &g),
+            EqKind::Constraint(K::Angle) => lines::choose_angle(self, &g),
+            EqKind::Constraint(K::EqualAngle) => lines::choose_equal_angle(self, &g),
+            EqKind::Constraint(K::CubicLineTangent) => curves::choose_cubic_line(self, &g),
+            EqKind::Constraint(K::Symmetric) => points::choose_symmetric(self, &g),
+            EqKind::Constraint(K::SameOrientation) => orientation::choose_same_orientation(self, &g),
+            EqKind::Constraint(K::CurveCurveTangent) => curves::choose_curve_curve(self, &g),
+            EqKind::Constraint(K::ArcLineTangent) => circles::choose_arc_line(self, &g),
+            _ => 0,
+        };
+    }
+
+    /// Number of residuals.
+    pub fn rows(&self, x: &[f64]) -> usize {
+        let mut r = Rows::new();
+        self.eval(x, &mut r);
+        r.n
+    }
+
+    /// Residuals and the dense Jacobian (row-major, `rows x x.len()`), exactly, by forward
+    /// differentiation in chunks of at most 16 directions.
+    pub fn jacobian(&self, x: &[f64], res: &mut [f64], jac: &mut [f64]) {
+        let n = x.len();
+        if n <= 4 {
+            self.jacobian_chunk::<4>(x, 0, res, jac);
+        } else if n <= 8 {
+            self.jacobian_chunk::<8>(x, 0, res, jac);
+        } else {
+            let mut start = 0;
+            while start < n {
+                self.jacobian_chunk::<16>(x, start, res, jac);
+                start += 16;
+            }
+        }
+    }
+
+    fn jacobian_chunk<const N: usize>(&self, x: &[f64], start: usize, res: &mut [f64], jac: &mut [f64]) {
+        let n = x.len();
+        let mut xd = [Dual::<N>::cst(0.0); 64];
+        let mut heap;
+        let xs: &mut [Dual<N>] = if n <= 64 {
+            &mut xd[..n]
+        } else {
+            heap = vec![Dual::<N>::cst(0.0); n];
+            &mut heap
+        };
+        for (i, (d, &v)) in xs.iter_mut().zip(x).enumerate() {
+            *d = Dual::var(v, i.wrapping_sub(start));
+        }
+        let mut out = Rows::new();
+        self.eval(xs, &mut out);
+        for r in 0..out.n {
+            res[r] = out.v[r].v;
+            let row = &mut jac[r * n..(r + 1) * n];
+            for k in 0..N.min(n.saturating_sub(start)) {
+                row[start + k] = out.v[r].d[k];
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

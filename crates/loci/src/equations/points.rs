@@ -1,0 +1,159 @@
+//! Points: coincidence, distances to points and planes, symmetry, midpoints, horizontal and
+//! vertical.
+
+use super::refs::{Ent, Geo};
+use super::{Equation, Rows};
+use crate::geom::{Scalar, Vec3};
+
+/// `pt_a = pt_b`: two rows in a workplane, three in space.
+pub(super) fn coincident<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let d = g.at(e.pt(0), e.wp()).minus(g.at(e.pt(1), e.wp()));
+    out.push(d.x);
+    out.push(d.y);
+    if e.wp.is_none() {
+        out.push(d.z);
+    }
+}
+
+/// `|pt_a - pt_b| = val`.
+pub(super) fn pt_pt_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let d = g.at(e.pt(0), e.wp()).minus(g.at(e.pt(1), e.wp()));
+    out.push(d.norm() - e.val);
+}
+
+/// Signed distance from `pt_a` to the plane `entity_a` (along its normal) is `val`.
+pub(super) fn pt_plane_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let f = e.frame(0);
+    let d = g.pos(e.pt(0)).minus(g.v3(f.origin));
+    out.push(d.dot(g.plane_normal(f)) - e.val);
+}
+
+/// `pt_a` lies in plane `entity_a`.
+pub(super) fn pt_in_plane<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let f = e.frame(0);
+    let d = g.pos(e.pt(0)).minus(g.v3(f.origin));
+    out.push(d.dot(g.plane_normal(f)));
+}
+
+/// `pt_a` stays at the position it had when the equations were built.
+pub(super) fn where_dragged<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let p = g.at(e.pt(0), e.wp());
+    out.push(p.x - e.target[0]);
+    out.push(p.y - e.target[1]);
+    if e.wp.is_none() {
+        out.push(p.z - e.target[2]);
+    }
+}
+
+/// `(pt_b - pt_a) . dir / |dir| = val`, with `dir` a line's or a normal's direction.
+pub(super) fn proj_pt_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let dir = direction(e.ent(0), g);
+    let d = g.pos(e.pt(1)).minus(g.pos(e.pt(0)));
+    out.push(d.dot(dir) / dir.norm() - e.val);
+}
+
+/// The direction of a line (end minus start) or of a normal (its N axis), in space.
+pub(super) fn direction<S: Scalar>(ent: &Ent, g: &Geo<S>) -> Vec3<S> {
+    match ent {
+        Ent::Line(l) => g.pos(&l[1]).minus(g.pos(&l[0])),
+        Ent::Normal(q) => g.quat(*q).n(),
+        Ent::Workplane(f) => g.plane_normal(f),
+        _ => unreachable!("validated: a line or a normal"),
+    }
+}
+
+/// Index of the largest component of `v` in magnitude.
+pub(super) fn dominant_axis(v: Vec3<f64>) -> u8 {
+    let a = [v.x.abs(), v.y.abs(), v.z.abs()];
+    if a[0] >= a[1] && a[0] >= a[2] {
+        0
+    } else if a[1] >= a[2] {
+        1
+    } else {
+        2
+    }
+}
+
+/// The two components of `c` other than `skip`: the informative ones of a cross product
+/// with a vector whose dominant axis is `skip`.
+pub(super) fn push_two<S: Scalar>(c: Vec3<S>, skip: u8, out: &mut Rows<S>) {
+    for i in 0..3u8 {
+        if i != skip {
+            out.push(c.at(i as usize));
+        }
+    }
+}
+
+pub(super) fn choose_symmetric(e: &Equation, g: &Geo<f64>) -> u8 {
+    dominant_axis(g.plane_normal(e.frame(0)))
+}
+
+/// `pt_a` and `pt_b` mirror each other in plane `entity_a`: the midpoint is on the plane and
+/// the segment between them is along the normal (projected into the workplane if there is one).
+pub(super) fn symmetric<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let f = e.frame(0);
+    let n = g.plane_normal(f);
+    let (a, b) = (g.pos(e.pt(0)), g.pos(e.pt(1)));
+    let mid = a.plus(b).scale_f(0.5);
+    out.push(mid.minus(g.v3(f.origin)).dot(n));
+    match e.wp() {
+        None => {
+            let ab = b.minus(a);
+            push_two(ab.cross(n).scale(S::cst(1.0) / n.norm()), e.choice, out);
+        }
+        Some(w) => {
+            let ab = g.at(e.pt(1), Some(w)).minus(g.at(e.pt(0), Some(w)));
+            let n2 = g.project_dir(n, Some(w));
+            out.push(ab.cross(n2).z / n2.norm());
+        }
+    }
+}
+
+/// Symmetric about an axis of the workplane: `horizontal` mirrors across the vertical axis
+/// (same v, opposite u); otherwise across the horizontal axis (same u, opposite v).
+pub(super) fn symmetric_axis<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>, horizontal: bool) {
+    let (a, b) = (g.at(e.pt(0), e.wp()), g.at(e.pt(1), e.wp()));
+    if horizontal {
+        out.push(a.y - b.y);
+        out.push(a.x + b.x);
+    } else {
+        out.push(a.x - b.x);
+        out.push(a.y + b.y);
+    }
+}
+
+/// `pt_a` and `pt_b` mirror each other across line `entity_a` in the workplane.
+pub(super) fn symmetric_line<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let w = e.wp();
+    let l = e.line(0);
+    let (l0, l1) = (g.at(&l[0], w), g.at(&l[1], w));
+    let (a, b) = (g.at(e.pt(0), w), g.at(e.pt(1), w));
+    let d = l1.minus(l0);
+    let len = d.norm();
+    let mid = a.plus(b).scale_f(0.5);
+    out.push(d.cross(mid.minus(l0)).z / len);
+    out.push(d.dot(b.minus(a)) / len);
+}
+
+/// `pt_a` is at the midpoint of line `entity_a`.
+pub(super) fn at_midpoint<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let w = e.wp();
+    let l = e.line(0);
+    let mid = g.at(&l[0], w).plus(g.at(&l[1], w)).scale_f(0.5);
+    let d = g.at(e.pt(0), w).minus(mid);
+    out.push(d.x);
+    out.push(d.y);
+    if w.is_none() {
+        out.push(d.z);
+    }
+}
+
+/// A line (or `pt_a`–`pt_b`) is horizontal (equal v) or vertical (equal u) in the workplane.
+pub(super) fn horizontal_vertical<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>, horizontal: bool) {
+    let w = e.wp();
+    let (a, b) = match e.ents.first() {
+        Some(Ent::Line(l)) => (g.at(&l[0], w), g.at(&l[1], w)),
+        _ => (g.at(e.pt(0), w), g.at(e.pt(1), w)),
+    };
+    out.push(if horizontal { a.y - b.y } else { a.x - b.x });
+}

@@ -1,0 +1,239 @@
+//! Entities resolved for evaluation: every parameter an equation reads becomes a local slot.
+
+use crate::error::ModelError;
+use crate::geom::{Quat, Scalar, Vec3};
+use crate::model::{EntityId, EntityKind, ObjectId, System};
+
+/// Index into an equation's local parameter list.
+pub(crate) type Slot = u16;
+
+/// A workplane: origin and orientation.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Frame {
+    pub id: EntityId,
+    pub origin: [Slot; 3],
+    pub q: [Slot; 4],
+}
+
+/// A point: three coordinates in space, or two in a workplane.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum PointRef {
+    P3([Slot; 3]),
+    P2 { wp: Frame, uv: [Slot; 2] },
+}
+
+/// Any entity, resolved.
+#[derive(Clone, Debug)]
+pub(crate) enum Ent {
+    Point(PointRef),
+    Normal([Slot; 4]),
+    Distance(Slot),
+    Workplane(Frame),
+    Line([PointRef; 2]),
+    Cubic([PointRef; 4]),
+    Circle { center: PointRef, q: [Slot; 4], radius: Slot },
+    Arc { center: PointRef, start: PointRef, end: PointRef, wp: Frame },
+}
+
+/// The parameters one equation reads, as positions in [`System::params`].
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Locals {
+    pub params: Vec<u32>,
+}
+
+impl Locals {
+    pub fn slot(&mut self, param: usize) -> Slot {
+        let p = param as u32;
+        if let Some(i) = self.params.iter().position(|&q| q == p) {
+            return i as Slot;
+        }
+        self.params.push(p);
+        (self.params.len() - 1) as Slot
+    }
+}
+
+/// Resolves entity handles into slot-based references.
+pub(crate) struct Resolver<'a> {
+    pub sys: &'a System,
+}
+
+impl Resolver<'_> {
+    fn param(&self, owner: EntityId, h: crate::model::ParamId, l: &mut Locals) -> Result<Slot, ModelError> {
+        let i = self.sys.param_index(h).ok_or(ModelError::Dangling {
+            owner: ObjectId::Entity(owner),
+            field: "params",
+            target: "param",
+            handle: h.0,
+        })?;
+        Ok(l.slot(i))
+    }
+
+    fn params<const N: usize>(
+        &self,
+        owner: EntityId,
+        ps: &[crate::model::ParamId],
+        l: &mut Locals,
+    ) -> Result<[Slot; N], ModelError> {
+        let mut out = [0; N];
+        for (o, p) in out.iter_mut().zip(ps) {
+            *o = self.param(owner, *p, l)?;
+        }
+        Ok(out)
+    }
+
+    fn dangling(owner: ObjectId, h: EntityId) -> ModelError {
+        ModelError::Dangling { owner, field: "entity", target: "entity", handle: h.0 }
+    }
+
+    /// Resolves entity `h`; `owner` is named in errors.
+    pub fn entity(&self, owner: ObjectId, h: EntityId, l: &mut Locals) -> Result<Ent, ModelError> {
+        self.entity_depth(owner, h, l, 0)
+    }
+
+    fn entity_depth(&self, owner: ObjectId, h: EntityId, l: &mut Locals, depth: u32) -> Result<Ent, ModelError> {
+        if depth > 4 {
+            return Err(ModelError::Cycle { entity: h });
+        }
+        let e = self.sys.entity(h).ok_or_else(|| Self::dangling(owner, h))?;
+        let me = ObjectId::Entity(h);
+        let sub = |l: &mut Locals, r: EntityId| self.entity_depth(me, r, l, depth + 1);
+        let point = |l: &mut Locals, r: EntityId| -> Result<PointRef, ModelError> {
+            match sub(l, r)? {
+                Ent::Point(p) => Ok(p),
+                _ => Err(self.wrong(me, r, "a point")),
+            }
+        };
+        let frame_of = |l: &mut Locals| -> Result<Frame, ModelError> {
+            let wp = e.workplane.ok_or(ModelError::MissingField {
+                owner: me,
+                field: "workplane",
+                expected: "a workplane",
+            })?;
+            match sub(l, wp)? {
+                Ent::Workplane(f) => Ok(f),
+                _ => Err(self.wrong(me, wp, "a workplane")),
+            }
+        };
+        Ok(match &e.kind {
+            EntityKind::PointIn3d { params } => Ent::Point(PointRef::P3(self.params(h, params, l)?)),
+            EntityKind::PointIn2d { params } => {
+                let wp = frame_of(l)?;
+                Ent::Point(PointRef::P2 { wp, uv: self.params(h, params, l)? })
+            }
+            EntityKind::NormalIn3d { params } => Ent::Normal(self.params(h, params, l)?),
+            EntityKind::NormalIn2d => Ent::Normal(frame_of(l)?.q),
+            EntityKind::Distance { param } => Ent::Distance(self.param(h, *param, l)?),
+            EntityKind::Workplane { origin, normal } => {
+                let o = match sub(l, *origin)? {
+                    Ent::Point(PointRef::P3(s)) => s,
+                    _ => return Err(self.wrong(me, *origin, "a 3D point")),
+                };
+                let q = match sub(l, *normal)? {
+                    Ent::Normal(q) => q,
+                    _ => return Err(self.wrong(me, *normal, "a normal")),
+                };
+                Ent::Workplane(Frame { id: h, origin: o, q })
+            }
+            EntityKind::LineSegment { points } => Ent::Line([point(l, points[0])?, point(l, points[1])?]),
+            EntityKind::Cubic { points } => Ent::Cubic([
+                point(l, points[0])?,
+                point(l, points[1])?,
+                point(l, points[2])?,
+                point(l, points[3])?,
+            ]),
+            EntityKind::Circle { center, normal, radius } => {
+                let center = point(l, *center)?;
+                let q = match sub(l, *normal)? {
+                    Ent::Normal(q) => q,
+                    _ => return Err(self.wrong(me, *normal, "a normal")),
+                };
+                let radius = match sub(l, *radius)? {
+                    Ent::Distance(s) => s,
+                    _ => return Err(self.wrong(me, *radius, "a distance")),
+                };
+                Ent::Circle { center, q, radius }
+            }
+            EntityKind::ArcOfCircle { center, start, end, .. } => {
+                let wp = frame_of(l)?;
+                Ent::Arc { center: point(l, *center)?, start: point(l, *start)?, end: point(l, *end)?, wp }
+            }
+        })
+    }
+
+    fn wrong(&self, owner: ObjectId, h: EntityId, expected: &'static str) -> ModelError {
+        match self.sys.entity(h) {
+            Some(e) => ModelError::WrongKind { owner, field: "entity", entity: h, found: e.entity_type(), expected },
+            None => Self::dangling(owner, h),
+        }
+    }
+}
+
+/// Geometry read from local slot values.
+pub(crate) struct Geo<'a, S> {
+    pub x: &'a [S],
+}
+
+impl<S: Scalar> Geo<'_, S> {
+    #[inline]
+    pub fn p(&self, s: Slot) -> S {
+        self.x[s as usize]
+    }
+
+    #[inline]
+    pub fn quat(&self, q: [Slot; 4]) -> Quat<S> {
+        Quat { w: self.p(q[0]), x: self.p(q[1]), y: self.p(q[2]), z: self.p(q[3]) }
+    }
+
+    #[inline]
+    pub fn v3(&self, s: [Slot; 3]) -> Vec3<S> {
+        Vec3::new(self.p(s[0]), self.p(s[1]), self.p(s[2]))
+    }
+
+    /// The point in space.
+    pub fn pos(&self, p: &PointRef) -> Vec3<S> {
+        match p {
+            PointRef::P3(s) => self.v3(*s),
+            PointRef::P2 { wp, uv } => {
+                let q = self.quat(wp.q);
+                let (u, v) = (self.p(uv[0]), self.p(uv[1]));
+                self.v3(wp.origin).plus(q.u().scale(u)).plus(q.v().scale(v))
+            }
+        }
+    }
+
+    /// The point in workplane `wp` as (u, v, 0), or in space when `wp` is `None`.
+    pub fn at(&self, p: &PointRef, wp: Option<&Frame>) -> Vec3<S> {
+        match (p, wp) {
+            (_, None) => self.pos(p),
+            (PointRef::P2 { wp: own, uv }, Some(f)) if own.id == f.id => {
+                Vec3::uv(self.p(uv[0]), self.p(uv[1]))
+            }
+            (_, Some(f)) => {
+                let d = self.pos(p).minus(self.v3(f.origin));
+                let q = self.quat(f.q);
+                Vec3::uv(d.dot(q.u()), d.dot(q.v()))
+            }
+        }
+    }
+
+    /// A direction in space projected into `wp` (or left in space).
+    pub fn project_dir(&self, d: Vec3<S>, wp: Option<&Frame>) -> Vec3<S> {
+        match wp {
+            None => d,
+            Some(f) => {
+                let q = self.quat(f.q);
+                Vec3::uv(d.dot(q.u()), d.dot(q.v()))
+            }
+        }
+    }
+
+    /// End minus start of a line, in `wp` or in space.
+    pub fn line_dir(&self, l: &[PointRef; 2], wp: Option<&Frame>) -> Vec3<S> {
+        self.at(&l[1], wp).minus(self.at(&l[0], wp))
+    }
+
+    /// The normal vector of a workplane.
+    pub fn plane_normal(&self, f: &Frame) -> Vec3<S> {
+        self.quat(f.q).n()
+    }
+}

@@ -1,0 +1,106 @@
+//! Typed errors: each names the object that is wrong and what was expected.
+
+use crate::model::{ConstraintId, ConstraintKind, EntityId, EntityType, ObjectId};
+use thiserror::Error;
+
+/// Something in a [`System`](crate::System) that cannot be solved as given.
+#[derive(Clone, Debug, Error, PartialEq)]
+#[non_exhaustive]
+pub enum ModelError {
+    /// A handle is 0, which is reserved.
+    #[error("{what} #{index} has handle 0; handles start at 1")]
+    ZeroHandle {
+        /// "param", "entity" or "constraint".
+        what: &'static str,
+        /// Its position in the list (0-based).
+        index: usize,
+    },
+    /// Two objects of one kind share a handle.
+    #[error("{object} is defined twice")]
+    DuplicateHandle {
+        /// The repeated handle.
+        object: ObjectId,
+    },
+    /// A reference to an object that does not exist.
+    #[error("{owner}: {field} refers to {target} {handle}, which does not exist")]
+    Dangling {
+        /// The object holding the reference.
+        owner: ObjectId,
+        /// The field.
+        field: &'static str,
+        /// "param" or "entity".
+        target: &'static str,
+        /// The missing handle.
+        handle: u32,
+    },
+    /// A reference to an entity of the wrong type.
+    #[error("{owner}: {field} is {entity}, a {found}, but {expected} is expected")]
+    WrongKind {
+        /// The object holding the reference.
+        owner: ObjectId,
+        /// The field.
+        field: &'static str,
+        /// The entity referred to.
+        entity: EntityId,
+        /// What it is.
+        found: EntityType,
+        /// What it should be.
+        expected: &'static str,
+    },
+    /// A required field is empty.
+    #[error("{owner}: {field} is missing; {expected} is expected")]
+    MissingField {
+        /// The object.
+        owner: ObjectId,
+        /// The field.
+        field: &'static str,
+        /// What it should hold.
+        expected: &'static str,
+    },
+    /// A NaN or infinite number.
+    #[error("{owner}: {field} is {value}, not a finite number")]
+    NonFinite {
+        /// The object.
+        owner: ObjectId,
+        /// The field.
+        field: &'static str,
+        /// The value.
+        value: f64,
+    },
+    /// A constraint that only applies in a workplane has none.
+    #[error("{constraint} ({kind}) must be given a workplane; it cannot be free in 3D")]
+    NeedsWorkplane {
+        /// The constraint.
+        constraint: ConstraintId,
+        /// Its type.
+        kind: ConstraintKind,
+    },
+    /// An entity refers to itself through its references.
+    #[error("{entity}: its references loop back to itself")]
+    Cycle {
+        /// The entity.
+        entity: EntityId,
+    },
+}
+
+/// Why a solve could not start.
+#[derive(Clone, Debug, Error, PartialEq)]
+#[non_exhaustive]
+pub enum SolveError {
+    /// The model is not valid.
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    /// A dragged parameter does not exist.
+    #[error("dragged parameter {0} does not exist")]
+    UnknownDragged(u32),
+    /// A solver option is out of range.
+    #[error("option {name} = {value} is out of range: {expected}")]
+    BadOption {
+        /// The option.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// The allowed range.
+        expected: &'static str,
+    },
+}

@@ -1,0 +1,290 @@
+//! Entities: geometry defined by parameters and by other entities.
+
+use super::{EntityId, GroupId, ParamId};
+use serde::{Deserialize, Serialize};
+use std::fmt;
+
+/// A geometric object. `workplane` is the plane a 2D entity lives in; `None` means free in 3D.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Entity {
+    /// Unique non-zero handle.
+    pub h: EntityId,
+    /// The group this entity belongs to.
+    pub group: GroupId,
+    /// The workplane of a 2D entity. Required for `point_in_2d`, `normal_in_2d` and
+    /// `arc_of_circle`; optional elsewhere (a line whose points lie in a workplane may name it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub workplane: Option<EntityId>,
+    /// What the entity is, with its parameters and sub-entities.
+    #[serde(flatten)]
+    pub kind: EntityKind,
+}
+
+/// The entity types of the SolveSpace model, each with what defines it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "type", rename_all = "snake_case")]
+pub enum EntityKind {
+    /// A point in 3D: x, y, z.
+    PointIn3d {
+        /// x, y, z.
+        params: [ParamId; 3],
+    },
+    /// A point in a workplane: u, v in the workplane's coordinates.
+    PointIn2d {
+        /// u, v.
+        params: [ParamId; 2],
+    },
+    /// An orientation in 3D as a unit quaternion w, x, y, z (with the implicit `|q| = 1`).
+    NormalIn3d {
+        /// w, x, y, z.
+        params: [ParamId; 4],
+    },
+    /// The normal of a workplane, copied from it.
+    NormalIn2d,
+    /// A distance, e.g. a circle's radius.
+    Distance {
+        /// The value.
+        param: ParamId,
+    },
+    /// An oriented plane: an origin point and a normal (quaternion).
+    Workplane {
+        /// A 3D point.
+        origin: EntityId,
+        /// A 3D normal.
+        normal: EntityId,
+    },
+    /// A line segment between two points.
+    LineSegment {
+        /// Start and end.
+        points: [EntityId; 2],
+    },
+    /// A cubic Bezier segment: P0, P1, P2, P3.
+    Cubic {
+        /// The four control points.
+        points: [EntityId; 4],
+    },
+    /// A complete circle.
+    Circle {
+        /// Centre point.
+        center: EntityId,
+        /// The normal of its plane.
+        normal: EntityId,
+        /// A distance entity holding the radius.
+        radius: EntityId,
+    },
+    /// An arc, counter-clockwise from `start` to `end` about the workplane normal, with the
+    /// implicit condition `|start - center| = |end - center|`. Coincident ends make a full circle.
+    ArcOfCircle {
+        /// The normal (of its workplane).
+        normal: EntityId,
+        /// Centre point.
+        center: EntityId,
+        /// Where the arc begins.
+        start: EntityId,
+        /// Where the arc ends.
+        end: EntityId,
+    },
+}
+
+/// The type of an entity without its data, for messages and type checks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+#[allow(missing_docs)]
+pub enum EntityType {
+    PointIn3d,
+    PointIn2d,
+    NormalIn3d,
+    NormalIn2d,
+    Distance,
+    Workplane,
+    LineSegment,
+    Cubic,
+    Circle,
+    ArcOfCircle,
+}
+
+impl EntityType {
+    /// The snake_case name used in files and messages.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            EntityType::PointIn3d => "point_in_3d",
+            EntityType::PointIn2d => "point_in_2d",
+            EntityType::NormalIn3d => "normal_in_3d",
+            EntityType::NormalIn2d => "normal_in_2d",
+            EntityType::Distance => "distance",
+            EntityType::Workplane => "workplane",
+            EntityType::LineSegment => "line_segment",
+            EntityType::Cubic => "cubic",
+            EntityType::Circle => "circle",
+            EntityType::ArcOfCircle => "arc_of_circle",
+        }
+    }
+
+    /// Whether this is a point.
+    #[must_use]
+    pub fn is_point(self) -> bool {
+        matches!(self, EntityType::PointIn3d | EntityType::PointIn2d)
+    }
+
+    /// Whether this is a normal.
+    #[must_use]
+    pub fn is_normal(self) -> bool {
+        matches!(self, EntityType::NormalIn3d | EntityType::NormalIn2d)
+    }
+}
+
+impl fmt::Display for EntityType {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl EntityKind {
+    /// The type without its data.
+    #[must_use]
+    pub fn entity_type(&self) -> EntityType {
+        match self {
+            EntityKind::PointIn3d { .. } => EntityType::PointIn3d,
+            EntityKind::PointIn2d { .. } => EntityType::PointIn2d,
+            EntityKind::NormalIn3d { .. } => EntityType::NormalIn3d,
+            EntityKind::NormalIn2d => EntityType::NormalIn2d,
+            EntityKind::Distance { .. } => EntityType::Distance,
+            EntityKind::Workplane { .. } => EntityType::Workplane,
+            EntityKind::LineSegment { .. } => EntityType::LineSegment,
+            EntityKind::Cubic { .. } => EntityType::Cubic,
+            EntityKind::Circle { .. } => EntityType::Circle,
+            EntityKind::ArcOfCircle { .. } => EntityType::ArcOfCircle,
+        }
+    }
+
+    /// The parameters this entity holds directly.
+    #[must_use]
+    pub fn params(&self) -> &[ParamId] {
+        match self {
+            EntityKind::PointIn3d { params } => params,
+            EntityKind::PointIn2d { params } => params,
+            EntityKind::NormalIn3d { params } => params,
+            EntityKind::Distance { param } => std::slice::from_ref(param),
+            _ => &[],
+        }
+    }
+
+    /// The entities this entity refers to, with the name of each field.
+    #[must_use]
+    pub fn references(&self) -> Vec<(&'static str, EntityId)> {
+        match self {
+            EntityKind::Workplane { origin, normal } => vec![("origin", *origin), ("normal", *normal)],
+            EntityKind::LineSegment { points } => vec![("points[0]", points[0]), ("points[1]", points[1])],
+            EntityKind::Cubic { points } => vec![
+                ("points[0]", points[0]),
+                ("points[1]", points[1]),
+                ("points[2]", points[2]),
+                ("points[3]", points[3]),
+            ],
+            EntityKind::Circle { center, normal, radius } => {
+                vec![("center", *center), ("normal", *normal), ("radius", *radius)]
+            }
+            EntityKind::ArcOfCircle { normal, center, start, end } => {
+                vec![("normal", *normal), ("center", *center), ("start", *start), ("end", *end)]
+            }
+            _ => Vec::new(),
+        }
+    }
+}
+
+impl Entity {
+    /// The type without its data.
+    #[must_use]
+    pub fn entity_type(&self) -> EntityType {
+        self.kind.entity_type()
+    }
+
+    /// A 3D point.
+    #[must_use]
+    pub fn point_3d(h: u32, group: u32, params: [u32; 3]) -> Self {
+        Self::plain(h, group, None, EntityKind::PointIn3d { params: params.map(ParamId) })
+    }
+
+    /// A point in workplane `wp`.
+    #[must_use]
+    pub fn point_2d(h: u32, group: u32, wp: u32, params: [u32; 2]) -> Self {
+        Self::plain(h, group, Some(wp), EntityKind::PointIn2d { params: params.map(ParamId) })
+    }
+
+    /// A 3D normal from quaternion parameters w, x, y, z.
+    #[must_use]
+    pub fn normal_3d(h: u32, group: u32, params: [u32; 4]) -> Self {
+        Self::plain(h, group, None, EntityKind::NormalIn3d { params: params.map(ParamId) })
+    }
+
+    /// The normal of workplane `wp`.
+    #[must_use]
+    pub fn normal_2d(h: u32, group: u32, wp: u32) -> Self {
+        Self::plain(h, group, Some(wp), EntityKind::NormalIn2d)
+    }
+
+    /// A distance (radius) entity.
+    #[must_use]
+    pub fn distance(h: u32, group: u32, wp: Option<u32>, param: u32) -> Self {
+        Self::plain(h, group, wp, EntityKind::Distance { param: ParamId(param) })
+    }
+
+    /// A workplane from an origin point and a normal.
+    #[must_use]
+    pub fn workplane(h: u32, group: u32, origin: u32, normal: u32) -> Self {
+        Self::plain(
+            h,
+            group,
+            None,
+            EntityKind::Workplane { origin: EntityId(origin), normal: EntityId(normal) },
+        )
+    }
+
+    /// A line segment; `wp` is its workplane, or `None` in 3D.
+    #[must_use]
+    pub fn line(h: u32, group: u32, wp: Option<u32>, a: u32, b: u32) -> Self {
+        Self::plain(h, group, wp, EntityKind::LineSegment { points: [EntityId(a), EntityId(b)] })
+    }
+
+    /// A cubic Bezier segment.
+    #[must_use]
+    pub fn cubic(h: u32, group: u32, wp: Option<u32>, points: [u32; 4]) -> Self {
+        Self::plain(h, group, wp, EntityKind::Cubic { points: points.map(EntityId) })
+    }
+
+    /// A circle.
+    #[must_use]
+    pub fn circle(h: u32, group: u32, wp: Option<u32>, center: u32, normal: u32, radius: u32) -> Self {
+        Self::plain(
+            h,
+            group,
+            wp,
+            EntityKind::Circle {
+                center: EntityId(center),
+                normal: EntityId(normal),
+                radius: EntityId(radius),
+            },
+        )
+    }
+
+    /// An arc of a circle in workplane `wp`.
+    #[must_use]
+    pub fn arc(h: u32, group: u32, wp: u32, normal: u32, center: u32, start: u32, end: u32) -> Self {
+        Self::plain(
+            h,
+            group,
+            Some(wp),
+            EntityKind::ArcOfCircle {
+                normal: EntityId(normal),
+                center: EntityId(center),
+                start: EntityId(start),
+                end: EntityId(end),
+            },
+        )
+    }
+
+    fn plain(h: u32, group: u32, wp: Option<u32>, kind: EntityKind) -> Self {
+        Self { h: EntityId(h), group: GroupId(group), workplane: wp.map(EntityId), kind }
+    }
+}

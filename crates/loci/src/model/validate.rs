@@ -1,0 +1,143 @@
+//! Whole-model checks: every reference exists and has the right type.
+
+use super::{
+    Constraint, EntityId, EntityKind, EntityType, ObjectId, PlaneRule, System, Want, FIELD_NAMES,
+};
+use crate::error::ModelError;
+
+impl System {
+    /// Checks every reference in the model: parameters and entities exist, each has the type
+    /// its field needs, 2D entities name a workplane, and constraints have the fields their
+    /// type uses.
+    ///
+    /// # Errors
+    /// The first problem found, naming the object and field.
+    pub fn validate(&self) -> Result<(), ModelError> {
+        for e in self.entities() {
+            self.validate_entity(e.h)?;
+        }
+        for c in self.constraints() {
+            self.validate_constraint(c)?;
+        }
+        Ok(())
+    }
+
+    fn entity_of(&self, owner: ObjectId, field: &'static str, h: EntityId) -> Result<EntityType, ModelError> {
+        self.entity(h).map(|e| e.entity_type()).ok_or(ModelError::Dangling {
+            owner,
+            field,
+            target: "entity",
+            handle: h.0,
+        })
+    }
+
+    fn expect(
+        &self,
+        owner: ObjectId,
+        field: &'static str,
+        h: EntityId,
+        ok: impl Fn(EntityType) -> bool,
+        expected: &'static str,
+    ) -> Result<(), ModelError> {
+        let found = self.entity_of(owner, field, h)?;
+        if ok(found) {
+            Ok(())
+        } else {
+            Err(ModelError::WrongKind { owner, field, entity: h, found, expected })
+        }
+    }
+
+    fn validate_entity(&self, h: EntityId) -> Result<(), ModelError> {
+        let Some(e) = self.entity(h) else { return Ok(()) };
+        let owner = ObjectId::Entity(h);
+        for (i, p) in e.kind.params().iter().enumerate() {
+            if self.param(*p).is_none() {
+                const NAMES: [&str; 4] = ["params[0]", "params[1]", "params[2]", "params[3]"];
+                return Err(ModelError::Dangling { owner, field: NAMES[i], target: "param", handle: p.0 });
+            }
+        }
+        let needs_wp = matches!(
+            e.kind,
+            EntityKind::PointIn2d { .. } | EntityKind::NormalIn2d | EntityKind::ArcOfCircle { .. }
+        );
+        match e.workplane {
+            Some(wp) => {
+                if wp == h {
+                    return Err(ModelError::Cycle { entity: h });
+                }
+                self.expect(owner, "workplane", wp, |t| t == EntityType::Workplane, "a workplane")?;
+            }
+            None if needs_wp => {
+                return Err(ModelError::MissingField { owner, field: "workplane", expected: "a workplane" });
+            }
+            None => {}
+        }
+        let point = |t: EntityType| t.is_point();
+        match &e.kind {
+            EntityKind::Workplane { origin, normal } => {
+                self.expect(owner, "origin", *origin, |t| t == EntityType::PointIn3d, "a 3D point")?;
+                self.expect(owner, "normal", *normal, |t| t == EntityType::NormalIn3d, "a 3D normal")?;
+            }
+            EntityKind::LineSegment { .. } | EntityKind::Cubic { .. } => {
+                for (field, r) in e.kind.references() {
+                    self.expect(owner, field, r, point, "a point")?;
+                }
+            }
+            EntityKind::Circle { center, normal, radius } => {
+                self.expect(owner, "center", *center, point, "a point")?;
+                self.expect(owner, "normal", *normal, EntityType::is_normal, "a normal")?;
+                self.expect(owner, "radius", *radius, |t| t == EntityType::Distance, "a distance")?;
+            }
+            EntityKind::ArcOfCircle { normal, center, start, end } => {
+                self.expect(owner, "normal", *normal, EntityType::is_normal, "a normal")?;
+                self.expect(owner, "center", *center, point, "a point")?;
+                self.expect(owner, "start", *start, point, "a point")?;
+                self.expect(owner, "end", *end, point, "a point")?;
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    fn validate_constraint(&self, c: &Constraint) -> Result<(), ModelError> {
+        let owner = ObjectId::Constraint(c.h);
+        if !c.val.is_finite() {
+            return Err(ModelError::NonFinite { owner, field: "val", value: c.val });
+        }
+        let sig = c.kind.signature();
+        match (sig.plane, c.workplane) {
+            (PlaneRule::Required, None) => {
+                return Err(ModelError::NeedsWorkplane { constraint: c.h, kind: c.kind })
+            }
+            (PlaneRule::Either | PlaneRule::Required, Some(wp)) => {
+                self.expect(owner, "workplane", wp, |t| t == EntityType::Workplane, "a workplane")?;
+            }
+            _ => {}
+        }
+        let fields = c.fields();
+        let point_form = matches!(c.kind, super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical)
+            && c.entity_a.is_none();
+        for (i, want) in sig.fields.iter().enumerate() {
+            let want = if point_form {
+                match i {
+                    0 | 1 => Some(Want::Point),
+                    _ => None,
+                }
+            } else {
+                *want
+            };
+            let Some(want) = want else { continue };
+            let field = FIELD_NAMES[i];
+            let Some(h) = fields[i] else {
+                let expected = if matches!(c.kind, super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical) {
+                    "a line segment (or points in pt_a and pt_b)"
+                } else {
+                    want.describe()
+                };
+                return Err(ModelError::MissingField { owner, field, expected });
+            };
+            self.expect(owner, field, h, |t| want.accepts(t), want.describe())?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,78 @@
+//! Solver settings.
+
+/// How a solve runs. Every field has a documented default; build with the `with_*` methods.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct Config {
+    /// A constraint holds when every residual is at most this (in model units: millimetres
+    /// for lengths; radians-like for angle rows). Default `1e-10`.
+    pub tolerance: f64,
+    /// Newton iterations per component before giving up. Default `50`.
+    pub max_iterations: usize,
+    /// Relative size of a dragged parameter's steps: the step minimises
+    /// `sum (dx_i / s_i)^2` with `s_i` this value for dragged parameters and 1 for the rest,
+    /// so dragged parameters move least. Default `0.05`.
+    pub dragged_scale: f64,
+    /// An equation whose normalised Jacobian row lies within this squared distance of the span
+    /// of the others is dependent (redundant or conflicting). Default `1e-10`.
+    pub rank_tolerance: f64,
+    /// Whether to name the redundant, conflicting or unsatisfied constraints. Default `true`.
+    pub find_failed: bool,
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Self { tolerance: 1e-10, max_iterations: 50, dragged_scale: 0.05, rank_tolerance: 1e-10, find_failed: true }
+    }
+}
+
+impl Config {
+    /// Sets [`Config::tolerance`].
+    #[must_use]
+    pub fn with_tolerance(mut self, v: f64) -> Self {
+        self.tolerance = v;
+        self
+    }
+
+    /// Sets [`Config::max_iterations`].
+    #[must_use]
+    pub fn with_max_iterations(mut self, v: usize) -> Self {
+        self.max_iterations = v;
+        self
+    }
+
+    /// Sets [`Config::dragged_scale`].
+    #[must_use]
+    pub fn with_dragged_scale(mut self, v: f64) -> Self {
+        self.dragged_scale = v;
+        self
+    }
+
+    /// Sets [`Config::rank_tolerance`].
+    #[must_use]
+    pub fn with_rank_tolerance(mut self, v: f64) -> Self {
+        self.rank_tolerance = v;
+        self
+    }
+
+    /// Sets [`Config::find_failed`].
+    #[must_use]
+    pub fn with_find_failed(mut self, v: bool) -> Self {
+        self.find_failed = v;
+        self
+    }
+
+    pub(crate) fn check(&self) -> Result<(), crate::SolveError> {
+        let bad = |name, value: f64, expected| Err(crate::SolveError::BadOption { name, value, expected });
+        if !(self.tolerance > 0.0 && self.tolerance.is_finite()) {
+            return bad("tolerance", self.tolerance, "a positive finite number");
+        }
+        if !(self.dragged_scale > 0.0 && self.dragged_scale <= 1.0) {
+            return bad("dragged_scale", self.dragged_scale, "in (0, 1]");
+        }
+        if !(self.rank_tolerance > 0.0 && self.rank_tolerance < 1.0) {
+            return bad("rank_tolerance", self.rank_tolerance, "in (0, 1)");
+        }
+        Ok(())
+    }
+}

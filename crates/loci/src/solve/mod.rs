@@ -1,0 +1,322 @@
+//! The solver pipeline: equations, substitution, decomposition, Newton, rank and report.
+//!
+//! 1. Every constraint of the group (and every implicit condition of its entities) is compiled
+//!    into equations with exact derivatives ([`crate::equations`]).
+//! 2. Equations `a = b` and `a = value` between parameters are removed by merging parameters.
+//! 3. The remaining equations split into independent components (connected through shared
+//!    unknowns); each is solved on its own.
+//! 4. Newton steps of minimum weighted norm move the drawing as little as possible; dragged
+//!    parameters weigh more, so they move least.
+//! 5. The rank of each component's Jacobian at the end gives the degrees of freedom and the
+//!    redundant or conflicting constraints.
+
+mod config;
+mod gram;
+mod newton;
+mod report;
+mod substitute;
+
+pub use config::Config;
+pub use report::{Outcome, Report};
+
+use crate::equations::{compile_group, Compiled, Owner};
+use crate::error::SolveError;
+use crate::model::{GroupId, ParamId, System};
+use newton::Component;
+use substitute::Substitution;
+
+/// Solves `group` of `sys` in place: parameters of the group are unknowns, all others are
+/// constants. `dragged` parameters move as little as possible.
+///
+/// Parameter values are written back for every component that converged (and for parameters
+/// fixed or merged by substitution when no substitution conflicts). Parameters of a component
+/// that did not converge keep their starting values.
+///
+/// # Errors
+/// An invalid model (dangling or zero handles, wrong entity types, NaN values, a 2D-only
+/// constraint with no workplane), an unknown dragged parameter, or a bad option.
+pub fn solve(sys: &mut System, group: GroupId, dragged: &[ParamId], cfg: &Config) -> Result<Report, SolveError> {
+    cfg.check()?;
+    sys.validate()?;
+    let params = sys.params();
+    let np = params.len();
+    let mut values: Vec<f64> = params.iter().map(|p| p.val).collect();
+    let unknown: Vec<bool> = params.iter().map(|p| p.group == group).collect();
+    let mut is_dragged = vec![false; np];
+    for h in dragged {
+        let i = sys.param_index(*h).ok_or(SolveError::UnknownDragged(h.0))?;
+        is_dragged[i] = true;
+    }
+    let compiled = compile_group(sys, group, &values)?;
+    let tol = cfg.tolerance;
+
+    // 2. Substitution.
+    let mut sub = Substitution::new(np);
+    let mut kernels = Vec::new();
+    for c in compiled {
+        match c {
+            Compiled::Equal { owner, a, b } => match (unknown[a], unknown[b]) {
+                (true, true) => sub.merge(a, b, owner, tol),
+                (true, false) => sub.fix(a, values[b], owner, tol),
+                (false, true) => sub.fix(b, values[a], owner, tol),
+                (false, false) => sub.constant((values[a] - values[b]).abs() <= tol, owner),
+            },
+            Compiled::Fix { owner, p, value } => {
+                if unknown[p] {
+                    sub.fix(p, value, owner, tol);
+                } else {
+                    sub.constant((values[p] - value).abs() <= tol, owner);
+                }
+            }
+            Compiled::Kernel(k) => kernels.push(k),
+        }
+    }
+    // Starting value of each merged set: the mean of its dragged members if any, else of all.
+    let mut root_of = vec![usize::MAX; np];
+    let mut acc: Vec<(f64, usize, f64, usize)> = vec![(0.0, 0, 0.0, 0); np];
+    let n_unknown = unknown.iter().filter(|&&u| u).count();
+    for p in 0..np {
+        if !unknown[p] {
+            continue;
+        }
+        let r = sub.find(p);
+        root_of[p] = r;
+        let a = &mut acc[r];
+        a.0 += values[p];
+        a.1 += 1;
+        if is_dragged[p] {
+            a.2 += values[p];
+            a.3 += 1;
+        }
+    }
+    let mut fixed = vec![None; np];
+    for p in 0..np {
+        if unknown[p] {
+            fixed[p] = sub.fixed_value(p);
+        }
+    }
+    let mut start = vec![0.0; np];
+    for p in 0..np {
+        if unknown[p] {
+            let a = acc[root_of[p]];
+            start[p] = match fixed[p] {
+                Some(v) => v,
+                None if a.3 > 0 => a.2 / a.3 as f64,
+                None => a.0 / a.1 as f64,
+            };
+        }
+    }
+    let mut root_dragged = vec![false; np];
+    for p in 0..np {
+        if unknown[p] && is_dragged[p] {
+            root_dragged[root_of[p]] = true;
+        }
+    }
+
+    // 3. Columns and components.
+    let mut col_of_root = vec![u32::MAX; np];
+    let mut col_root: Vec<usize> = Vec::new();
+    let col_of_param = |p: usize, col_of_root: &[u32]| -> Option<u32> {
+        if !unknown[p] || fixed[p].is_some() {
+            return None;
+        }
+        let c = col_of_root[root_of[p]];
+        (c != u32::MAX).then_some(c)
+    };
+    for k in &kernels {
+        for &p in &k.locals {
+            let p = p as usize;
+            if unknown[p] && fixed[p].is_none() && col_of_root[root_of[p]] == u32::MAX {
+                col_of_root[root_of[p]] = col_root.len() as u32;
+                col_root.push(root_of[p]);
+            }
+        }
+    }
+    // Constants take their (merged or fixed) starting values.
+    for p in 0..np {
+        if unknown[p] {
+            values[p] = start[p];
+        }
+    }
+    let ncols = col_root.len();
+    let mut comp_of_col: Vec<u32> = (0..ncols as u32).collect();
+    fn find(v: &mut [u32], mut a: u32) -> u32 {
+        while v[a as usize] != a {
+            let g = v[v[a as usize] as usize];
+            v[a as usize] = g;
+            a = g;
+        }
+        a
+    }
+    let mut constant_kernels = Vec::new();
+    for (ki, k) in kernels.iter().enumerate() {
+        let mut first: Option<u32> = None;
+        for &p in &k.locals {
+            if let Some(c) = col_of_param(p as usize, &col_of_root) {
+                match first {
+                    None => first = Some(c),
+                    Some(f) => {
+                        let (a, b) = (find(&mut comp_of_col, f), find(&mut comp_of_col, c));
+                        if a != b {
+                            comp_of_col[b.max(a) as usize] = a.min(b);
+                        }
+                    }
+                }
+            }
+        }
+        if first.is_none() {
+            constant_kernels.push(ki);
+        }
+    }
+    // Group kernels and columns by component, in order of first appearance.
+    let mut comp_index = vec![u32::MAX; ncols];
+    let mut comps: Vec<(Vec<usize>, Vec<usize>)> = Vec::new();
+    for c in 0..ncols {
+        let r = find(&mut comp_of_col, c as u32) as usize;
+        if comp_index[r] == u32::MAX {
+            comp_index[r] = comps.len() as u32;
+            comps.push((Vec::new(), Vec::new()));
+        }
+        let ci = comp_index[r] as usize;
+        comps[ci].1.push(c);
+    }
+    for (ki, k) in kernels.iter().enumerate() {
+        if let Some(c) = k.locals.iter().find_map(|&p| col_of_param(p as usize, &col_of_root)) {
+            let r = find(&mut comp_of_col, c) as usize;
+            comps[comp_index[r] as usize].0.push(ki);
+        }
+    }
+
+    // 4. Newton per component.
+    let mut report = Report {
+        outcome: Outcome::Okay,
+        dof: 0,
+        failed: Vec::new(),
+        failed_entities: Vec::new(),
+        iterations: 0,
+        residual: 0.0,
+        unknowns: n_unknown - sub.removed,
+        equations: kernels.iter().map(|k| k.rows).sum(),
+        components: comps.len(),
+    };
+    let mut rank_total = 0usize;
+    let mut redundant: Vec<Owner> = Vec::new();
+    let mut conflicting: Vec<Owner> = Vec::new();
+    let mut unsatisfied: Vec<Owner> = Vec::new();
+    let mut x_all: Vec<f64> = col_root.iter().map(|&r| start[r]).collect();
+    let mut ok_col = vec![false; ncols];
+    for (members, cols) in &comps {
+        let local: Vec<u32> = {
+            let mut v = vec![u32::MAX; ncols];
+            for (i, &c) in cols.iter().enumerate() {
+                v[c] = i as u32;
+            }
+            v
+        };
+        let scale: Vec<f64> =
+            cols.iter().map(|&c| if root_dragged[col_root[c]] { cfg.dragged_scale } else { 1.0 }).collect();
+        let map = |p: usize| col_of_param(p, &col_of_root).map(|c| local[c as usize]);
+        let mut comp = Component::new(&kernels, members, &map, cols.len(), scale);
+        let mut x: Vec<f64> = cols.iter().map(|&c| x_all[c]).collect();
+        let fin = comp.solve(&kernels, &mut x, &values, cfg);
+        report.iterations = report.iterations.max(fin.iterations);
+        report.residual = report.residual.max(fin.residual);
+        rank_total += comp.rows - fin.dropped.len();
+        let owner_of = |row: usize| {
+            let (b, _) = comp.row_block[row];
+            kernels[comp.blocks[b as usize].kernel].owner
+        };
+        if fin.converged {
+            for (i, &c) in cols.iter().enumerate() {
+                x_all[c] = x[i];
+                ok_col[c] = true;
+            }
+            for dep in &fin.dependencies {
+                redundant.extend(dep.iter().map(|&r| owner_of(r)));
+            }
+            if !cfg.find_failed {
+                redundant.extend(fin.dropped.iter().map(|&r| owner_of(r)));
+            }
+        } else if !fin.dropped.is_empty() {
+            for dep in &fin.dependencies {
+                conflicting.extend(dep.iter().map(|&r| owner_of(r)));
+            }
+            if conflicting.is_empty() {
+                conflicting.extend(fin.dropped.iter().map(|&r| owner_of(r)));
+            }
+        } else {
+            unsatisfied.extend(fin.unsatisfied.iter().map(|&r| owner_of(r)));
+        }
+    }
+    for &ki in &constant_kernels {
+        let k = &kernels[ki];
+        let mut xs = Vec::new();
+        k.gather(&values, &mut xs);
+        let mut out = crate::equations::Rows::new();
+        k.eq.eval(&xs, &mut out);
+        let bad = out.v[..out.n].iter().any(|v| !(v.abs() <= tol));
+        if bad {
+            conflicting.push(k.owner);
+        } else {
+            redundant.push(k.owner);
+        }
+    }
+    for s in &sub.redundant {
+        redundant.extend(s);
+    }
+    for s in &sub.conflicts {
+        conflicting.extend(s);
+    }
+
+    // 5. Outcome, DOF, write-back.
+    report.dof = report.unknowns.saturating_sub(rank_total);
+    let failed = if !conflicting.is_empty() {
+        report.outcome = Outcome::Inconsistent;
+        conflicting
+    } else if !unsatisfied.is_empty() {
+        report.outcome = Outcome::DidNotConverge;
+        unsatisfied
+    } else if !redundant.is_empty() {
+        report.outcome = Outcome::RedundantOkay;
+        redundant
+    } else {
+        Vec::new()
+    };
+    if cfg.find_failed {
+        for o in failed {
+            match o {
+                Owner::Constraint(c) => report.failed.push(c),
+                Owner::Entity(e) => report.failed_entities.push(e),
+            }
+        }
+        report.failed.sort_unstable();
+        report.failed.dedup();
+        report.failed_entities.sort_unstable();
+        report.failed_entities.dedup();
+    }
+    let sub_ok = sub.conflicts.is_empty();
+    let handles: Vec<ParamId> = sys.params().iter().map(|p| p.h).collect();
+    for p in 0..np {
+        if !unknown[p] {
+            continue;
+        }
+        let val = match col_of_param(p, &col_of_root) {
+            Some(c) if ok_col[c as usize] => x_all[c as usize],
+            Some(_) => continue,
+            None if sub_ok => start[p],
+            None => continue,
+        };
+        sys.set_value(handles[p], val);
+    }
+    Ok(report)
+}
+
+impl System {
+    /// Solves `group` with default settings and no dragged parameters. See [`solve`].
+    ///
+    /// # Errors
+    /// As [`solve`].
+    pub fn solve_group(&mut self, group: impl Into<GroupId>) -> Result<Report, SolveError> {
+        solve(self, group.into(), &[], &Config::default())
+    }
+}

@@ -1,0 +1,258 @@
+//! Least-squares Newton on one component: minimum-norm steps through the normal equations,
+//! with a backtracking line search as the safety net.
+
+use super::gram::Gram;
+use super::Config;
+use crate::equations::Kernel;
+use crate::equations::Rows;
+
+/// One kernel's place in the component's Jacobian.
+pub(crate) struct Block {
+    pub kernel: usize,
+    /// First row of the kernel in the component.
+    pub row0: usize,
+    /// First Jacobian value of the kernel's dense block (rows x cols, row-major).
+    pub jv0: usize,
+    /// The component columns this kernel touches.
+    pub cols: Vec<u32>,
+    /// For each local slot: its position in `cols`, or -1 for a constant.
+    pub slot_col: Vec<i32>,
+}
+
+/// How one component ended.
+pub(crate) struct Finish {
+    pub converged: bool,
+    pub iterations: usize,
+    /// Rows whose equations depend on others at the final point.
+    pub dropped: Vec<usize>,
+    /// For each dropped row: the rows it depends on (itself included).
+    pub dependencies: Vec<Vec<usize>>,
+    /// Rows whose residual is above tolerance at the end.
+    pub unsatisfied: Vec<usize>,
+    pub residual: f64,
+}
+
+/// A component ready to solve repeatedly.
+pub(crate) struct Component {
+    pub blocks: Vec<Block>,
+    pub rows: usize,
+    /// Component row -> (block, row within block).
+    pub row_block: Vec<(u32, u8)>,
+    /// Scale of each column (dragged parameters are smaller).
+    pub scale: Vec<f64>,
+    /// Per column: (row, index into Jacobian values).
+    pub columns: Vec<Vec<(u32, u32)>>,
+    pub nnz: usize,
+    pub gram: Option<Gram>,
+}
+
+impl Component {
+    pub fn new(kernels: &[Kernel], members: &[usize], col_of_param: &dyn Fn(usize) -> Option<u32>, ncols: usize, scale: Vec<f64>) -> Self {
+        let mut blocks = Vec::with_capacity(members.len());
+        let mut columns: Vec<Vec<(u32, u32)>> = vec![Vec::new(); ncols];
+        let mut row_block = Vec::new();
+        let (mut row, mut jv) = (0usize, 0usize);
+        for (bi, &k) in members.iter().enumerate() {
+            let kern = &kernels[k];
+            let mut cols: Vec<u32> = Vec::new();
+            let mut slot_col = Vec::with_capacity(kern.locals.len());
+            for &p in &kern.locals {
+                match col_of_param(p as usize) {
+                    Some(c) => {
+                        let pos = match cols.iter().position(|&x| x == c) {
+                            Some(i) => i,
+                            None => {
+                                cols.push(c);
+                                cols.len() - 1
+                            }
+                        };
+                        slot_col.push(pos as i32);
+                    }
+                    None => slot_col.push(-1),
+                }
+            }
+            for r in 0..kern.rows {
+                for (ci, &c) in cols.iter().enumerate() {
+                    columns[c as usize].push(((row + r) as u32, (jv + r * cols.len() + ci) as u32));
+                }
+                row_block.push((bi as u32, r as u8));
+            }
+            let n = cols.len();
+            blocks.push(Block { kernel: k, row0: row, jv0: jv, cols, slot_col });
+            row += kern.rows;
+            jv += kern.rows * n;
+        }
+        Self { blocks, rows: row, row_block, scale, columns, nnz: jv, gram: None }
+    }
+
+    fn gather(&self, b: &Block, kern: &Kernel, x: &[f64], values: &[f64], xs: &mut Vec<f64>) {
+        xs.clear();
+        for (s, &p) in kern.locals.iter().enumerate() {
+            let c = b.slot_col[s];
+            xs.push(if c >= 0 { x[b.cols[c as usize] as usize] } else { values[p as usize] });
+        }
+    }
+
+    /// Residuals only.
+    fn residuals(&self, kernels: &[Kernel], x: &[f64], values: &[f64], r: &mut [f64], xs: &mut Vec<f64>) {
+        for b in &self.blocks {
+            let k = &kernels[b.kernel];
+            self.gather(b, k, x, values, xs);
+            let mut out = Rows::new();
+            k.eq.eval(xs, &mut out);
+            r[b.row0..b.row0 + k.rows].copy_from_slice(&out.v[..k.rows]);
+        }
+    }
+
+    /// Residuals and Jacobian.
+    fn jacobian(&self, kernels: &[Kernel], x: &[f64], values: &[f64], r: &mut [f64], jv: &mut [f64], xs: &mut Vec<f64>, jl: &mut Vec<f64>) {
+        for b in &self.blocks {
+            let k = &kernels[b.kernel];
+            self.gather(b, k, x, values, xs);
+            let n = xs.len();
+            jl.clear();
+            jl.resize(k.rows * n, 0.0);
+            k.eq.jacobian(xs, &mut r[b.row0..b.row0 + k.rows], jl);
+            let w = b.cols.len();
+            let block = &mut jv[b.jv0..b.jv0 + k.rows * w];
+            block.iter_mut().for_each(|v| *v = 0.0);
+            for row in 0..k.rows {
+                for s in 0..n {
+                    let c = b.slot_col[s];
+                    if c >= 0 {
+                        block[row * w + c as usize] += jl[row * n + s];
+                    }
+                }
+            }
+        }
+    }
+
+    /// Solves from `x` in place.
+    pub fn solve(&mut self, kernels: &[Kernel], x: &mut [f64], values: &[f64], cfg: &Config) -> Finish {
+        let m = self.rows;
+        let ncols = x.len();
+        if self.gram.is_none() {
+            self.gram = Gram::new(m, &self.columns);
+        }
+        let mut r = vec![0.0; m];
+        let mut jv = vec![0.0; self.nnz];
+        let mut jn = vec![0.0; self.nnz];
+        let mut inv = vec![0.0; m];
+        let mut y = vec![0.0; m];
+        let mut dx = vec![0.0; ncols];
+        let mut xt = vec![0.0; ncols];
+        let mut rt = vec![0.0; m];
+        let (mut xs, mut jl) = (Vec::new(), Vec::new());
+        let mut iterations = 0;
+        let mut converged = false;
+        let mut factored = false;
+        loop {
+            self.jacobian(kernels, x, values, &mut r, &mut jv, &mut xs, &mut jl);
+            // Normalise rows of J S so the pivots of G measure independence, not units.
+            inv.iter_mut().for_each(|v| *v = 0.0);
+            for (c, col) in self.columns.iter().enumerate() {
+                let s = self.scale[c];
+                for &(row, idx) in col {
+                    let v = jv[idx as usize] * s;
+                    jn[idx as usize] = v;
+                    inv[row as usize] += v * v;
+                }
+            }
+            for v in &mut inv {
+                *v = if *v > 0.0 { 1.0 / v.sqrt() } else { 0.0 };
+            }
+            for col in &self.columns {
+                for &(row, idx) in col {
+                    jn[idx as usize] *= inv[row as usize];
+                }
+            }
+            let Some(gram) = self.gram.as_mut() else { break };
+            factored = gram.factor(&jn, cfg.rank_tolerance);
+            let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            if max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite()) {
+                converged = true;
+                break;
+            }
+            if !factored || iterations >= cfg.max_iterations {
+                break;
+            }
+            iterations += 1;
+            for i in 0..m {
+                y[i] = -r[i] * inv[i];
+            }
+            gram.solve(&mut y);
+            dx.iter_mut().for_each(|v| *v = 0.0);
+            for (c, col) in self.columns.iter().enumerate() {
+                let mut acc = 0.0;
+                for &(row, idx) in col {
+                    acc += jn[idx as usize] * y[row as usize];
+                }
+                dx[c] = acc * self.scale[c];
+            }
+            // Backtracking on the normalised residual, the quantity the step minimises.
+            let merit = |r: &[f64]| r.iter().zip(&inv).map(|(a, b)| (a * b) * (a * b)).sum::<f64>();
+            let m0 = merit(&r);
+            let mut alpha = 1.0;
+            let mut accepted = false;
+            for _ in 0..20 {
+                for c in 0..ncols {
+                    xt[c] = x[c] + alpha * dx[c];
+                }
+                self.residuals(kernels, &xt, values, &mut rt, &mut xs);
+                let mt = merit(&rt);
+                if mt.is_finite() && (mt < m0 || mt == 0.0) {
+                    accepted = true;
+                    break;
+                }
+                alpha *= 0.5;
+            }
+            if !accepted {
+                break;
+            }
+            x.copy_from_slice(&xt);
+        }
+        let mut fin = Finish {
+            converged,
+            iterations,
+            dropped: Vec::new(),
+            dependencies: Vec::new(),
+            unsatisfied: Vec::new(),
+            residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
+        };
+        fin.unsatisfied = (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect();
+        if let (Some(gram), true) = (self.gram.as_mut(), factored) {
+            fin.dropped = gram.dropped();
+            if cfg.find_failed {
+                for &k in &fin.dropped {
+                    fin.dependencies.push(dependencies(gram, &self.columns, &jn, k, m));
+                }
+            }
+        } else {
+            // No factorisation: count every row as unresolved.
+            fin.dropped = (0..m).collect();
+        }
+        fin
+    }
+}
+
+/// The rows that row `k` of the normalised Jacobian is a combination of: solve
+/// `G c = J J_kᵀ`; dropped rows get (almost) nothing, so `c` expresses row `k` in the others.
+fn dependencies(gram: &mut Gram, columns: &[Vec<(u32, u32)>], jn: &[f64], k: usize, m: usize) -> Vec<usize> {
+    let mut b = vec![0.0; m];
+    for col in columns {
+        let Some(&(_, ik)) = col.iter().find(|&&(row, _)| row as usize == k) else { continue };
+        let vk = jn[ik as usize];
+        for &(row, idx) in col {
+            b[row as usize] += jn[idx as usize] * vk;
+        }
+    }
+    gram.solve(&mut b);
+    let mut out = vec![k];
+    for (i, &c) in b.iter().enumerate() {
+        if i != k && c.abs() > 1e-6 {
+            out.push(i);
+        }
+    }
+    out.sort_unstable();
+    out
+}
