@@ -1,1 +1,92 @@
-fn main() {}
+//! `loci`: solve constraint problems from the command line.
+//!
+//! Exit status: 0 solved (okay or okay with redundant constraints), 1 inconsistent,
+//! 2 did not converge, 3 bad input (unreadable, malformed or invalid model).
+
+mod report;
+
+use clap::{Parser, Subcommand};
+use loci::format::json::{Problem, SolveResult};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// A geometric constraint solver for CAD.
+#[derive(Parser)]
+#[command(name = "loci", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Solve a problem file and print a report.
+    Solve {
+        /// A loci JSON problem.
+        file: PathBuf,
+        /// Print the result as JSON instead of a report.
+        #[arg(long)]
+        json: bool,
+        /// Solve this group instead of the one the file names.
+        #[arg(long)]
+        group: Option<u32>,
+        /// Write the solved problem (JSON) here.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+}
+
+/// Exit codes.
+pub(crate) mod code {
+    pub const SOLVED: u8 = 0;
+    pub const INCONSISTENT: u8 = 1;
+    pub const DID_NOT_CONVERGE: u8 = 2;
+    pub const BAD_INPUT: u8 = 3;
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli) {
+        Ok(c) => ExitCode::from(c),
+        Err(e) => {
+            eprintln!("loci: error: {e:#}");
+            ExitCode::from(code::BAD_INPUT)
+        }
+    }
+}
+
+fn run(cli: Cli) -> anyhow::Result<u8> {
+    match cli.command {
+        Command::Solve { file, json, group, output } => {
+            let text = std::fs::read_to_string(&file)
+                .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", file.display()))?;
+            let mut problem =
+                Problem::from_json(&text).map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+            let mut req = problem.request();
+            if let Some(g) = group {
+                req.group = g.into();
+            }
+            let before = problem.system.clone();
+            let rep = loci::solve(&mut problem.system, req.group, &req.dragged, &req.config())
+                .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+            if json {
+                println!("{}", SolveResult::new(&problem.system, req.group, &rep).to_json());
+            } else {
+                print!("{}", report::render(&file.display().to_string(), req.group, &before, &problem.system, &rep));
+            }
+            if let Some(out) = output {
+                std::fs::write(&out, problem.to_json())
+                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?;
+            }
+            Ok(exit_code(rep.outcome))
+        }
+    }
+}
+
+pub(crate) fn exit_code(o: loci::Outcome) -> u8 {
+    match o {
+        loci::Outcome::Okay | loci::Outcome::RedundantOkay => code::SOLVED,
+        loci::Outcome::Inconsistent => code::INCONSISTENT,
+        loci::Outcome::DidNotConverge => code::DID_NOT_CONVERGE,
+    }
+}

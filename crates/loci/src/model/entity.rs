@@ -25,21 +25,25 @@ pub struct Entity {
 #[serde(tag = "type", rename_all = "snake_case")]
 pub enum EntityKind {
     /// A point in 3D: x, y, z.
+    #[serde(rename = "point_in_3d")]
     PointIn3d {
         /// x, y, z.
         params: [ParamId; 3],
     },
     /// A point in a workplane: u, v in the workplane's coordinates.
+    #[serde(rename = "point_in_2d")]
     PointIn2d {
         /// u, v.
         params: [ParamId; 2],
     },
     /// An orientation in 3D as a unit quaternion w, x, y, z (with the implicit `|q| = 1`).
+    #[serde(rename = "normal_in_3d")]
     NormalIn3d {
         /// w, x, y, z.
         params: [ParamId; 4],
     },
     /// The normal of a workplane, copied from it.
+    #[serde(rename = "normal_in_2d")]
     NormalIn2d,
     /// A distance, e.g. a circle's radius.
     Distance {
@@ -91,9 +95,13 @@ pub enum EntityKind {
 #[serde(rename_all = "snake_case")]
 #[allow(missing_docs)]
 pub enum EntityType {
+    #[serde(rename = "point_in_3d")]
     PointIn3d,
+    #[serde(rename = "point_in_2d")]
     PointIn2d,
+    #[serde(rename = "normal_in_3d")]
     NormalIn3d,
+    #[serde(rename = "normal_in_2d")]
     NormalIn2d,
     Distance,
     Workplane,

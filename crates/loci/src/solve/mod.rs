@@ -28,9 +28,9 @@ use substitute::Substitution;
 /// Solves `group` of `sys` in place: parameters of the group are unknowns, all others are
 /// constants. `dragged` parameters move as little as possible.
 ///
-/// Parameter values are written back for every component that converged (and for parameters
-/// fixed or merged by substitution when no substitution conflicts). Parameters of a component
-/// that did not converge keep their starting values.
+/// Parameter values are written back only when the outcome is okay (possibly with redundant
+/// constraints); after an inconsistent or non-converged solve every parameter keeps its
+/// starting value, as with libslvs.
 ///
 /// # Errors
 /// An invalid model (dangling or zero handles, wrong entity types, NaN values, a 2D-only
@@ -204,7 +204,6 @@ pub fn solve(sys: &mut System, group: GroupId, dragged: &[ParamId], cfg: &Config
     let mut conflicting: Vec<Owner> = Vec::new();
     let mut unsatisfied: Vec<Owner> = Vec::new();
     let mut x_all: Vec<f64> = col_root.iter().map(|&r| start[r]).collect();
-    let mut ok_col = vec![false; ncols];
     for (members, cols) in &comps {
         let local: Vec<u32> = {
             let mut v = vec![u32::MAX; ncols];
@@ -229,7 +228,6 @@ pub fn solve(sys: &mut System, group: GroupId, dragged: &[ParamId], cfg: &Config
         if fin.converged {
             for (i, &c) in cols.iter().enumerate() {
                 x_all[c] = x[i];
-                ok_col[c] = true;
             }
             for dep in &fin.dependencies {
                 redundant.extend(dep.iter().map(|&r| owner_of(r)));
@@ -294,19 +292,20 @@ pub fn solve(sys: &mut System, group: GroupId, dragged: &[ParamId], cfg: &Config
         report.failed_entities.sort_unstable();
         report.failed_entities.dedup();
     }
-    let sub_ok = sub.conflicts.is_empty();
-    let handles: Vec<ParamId> = sys.params().iter().map(|p| p.h).collect();
-    for p in 0..np {
-        if !unknown[p] {
-            continue;
+    // Values are written back only when every constraint holds, as libslvs does: a failed
+    // solve leaves the caller's parameters as they were.
+    if report.outcome.is_ok() {
+        let handles: Vec<ParamId> = sys.params().iter().map(|p| p.h).collect();
+        for p in 0..np {
+            if !unknown[p] {
+                continue;
+            }
+            let val = match col_of_param(p, &col_of_root) {
+                Some(c) => x_all[c as usize],
+                None => start[p],
+            };
+            sys.set_value(handles[p], val);
         }
-        let val = match col_of_param(p, &col_of_root) {
-            Some(c) if ok_col[c as usize] => x_all[c as usize],
-            Some(_) => continue,
-            None if sub_ok => start[p],
-            None => continue,
-        };
-        sys.set_value(handles[p], val);
     }
     Ok(report)
 }

@@ -1,0 +1,61 @@
+//! The human-readable solve report.
+
+use loci::{GroupId, Outcome, Report, System};
+use std::fmt::Write;
+
+/// Renders a report of solving `group`, comparing parameter values before and after.
+pub(crate) fn render(name: &str, group: GroupId, before: &System, after: &System, rep: &Report) -> String {
+    let mut s = String::new();
+    let verdict = match rep.outcome {
+        Outcome::Okay => "solved",
+        Outcome::RedundantOkay => "solved, with redundant constraints",
+        Outcome::Inconsistent => "inconsistent: some constraints cannot hold together",
+        Outcome::DidNotConverge => "did not converge",
+    };
+    let _ = writeln!(s, "{name}: {group}: {verdict}");
+    let _ = writeln!(s, "  outcome      {}", rep.outcome);
+    let _ = writeln!(s, "  dof          {}", rep.dof);
+    let _ = writeln!(
+        s,
+        "  size         {} unknowns, {} equations, {} components",
+        rep.unknowns, rep.equations, rep.components
+    );
+    let _ = writeln!(s, "  iterations   {}  (largest residual {:.3e})", rep.iterations, rep.residual);
+    let label = match rep.outcome {
+        Outcome::Okay => "failed",
+        Outcome::RedundantOkay => "redundant",
+        Outcome::Inconsistent => "conflicting",
+        Outcome::DidNotConverge => "unsatisfied",
+    };
+    if rep.failed.is_empty() && rep.failed_entities.is_empty() {
+        let _ = writeln!(s, "  {label:<12} none");
+    } else {
+        let _ = writeln!(s, "  {label}:");
+        for h in &rep.failed {
+            let kind = after.constraint(*h).map(|c| c.kind.name()).unwrap_or("?");
+            let _ = writeln!(s, "    {h} ({kind})");
+        }
+        for h in &rep.failed_entities {
+            let kind = after.entity(*h).map(|e| e.entity_type().name()).unwrap_or("?");
+            let _ = writeln!(s, "    {h} ({kind}, implicit condition)");
+        }
+    }
+    let moved: Vec<_> = before
+        .params()
+        .iter()
+        .zip(after.params())
+        .filter(|(b, a)| b.val != a.val)
+        .collect();
+    if moved.is_empty() {
+        let _ = writeln!(s, "  moved        none");
+    } else {
+        let _ = writeln!(s, "  moved parameters ({}):", moved.len());
+        for (b, a) in moved.iter().take(40) {
+            let _ = writeln!(s, "    {:<12} {:>14.6} -> {:>14.6}", a.h.to_string(), b.val, a.val);
+        }
+        if moved.len() > 40 {
+            let _ = writeln!(s, "    ... and {} more", moved.len() - 40);
+        }
+    }
+    s
+}
