@@ -57,11 +57,16 @@ fn main() -> ExitCode {
 
 fn run(cli: Cli) -> anyhow::Result<u8> {
     match cli.command {
-        Command::Solve { file, json, group, output } => {
+        Command::Solve {
+            file,
+            json,
+            group,
+            output,
+        } => {
             let text = std::fs::read_to_string(&file)
                 .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", file.display()))?;
-            let mut problem =
-                Problem::from_json(&text).map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+            let mut problem = Problem::from_json(&text)
+                .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
             let mut req = problem.request();
             if let Some(g) = group {
                 req.group = g.into();
@@ -70,9 +75,21 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             let rep = loci::solve(&mut problem.system, req.group, &req.dragged, &req.config())
                 .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
             if json {
-                println!("{}", SolveResult::new(&problem.system, req.group, &rep).to_json());
+                println!(
+                    "{}",
+                    SolveResult::new(&problem.system, req.group, &rep).to_json()
+                );
             } else {
-                print!("{}", report::render(&file.display().to_string(), req.group, &before, &problem.system, &rep));
+                print!(
+                    "{}",
+                    report::render(
+                        &file.display().to_string(),
+                        req.group,
+                        &before,
+                        &problem.system,
+                        &rep
+                    )
+                );
             }
             if let Some(out) = output {
                 std::fs::write(&out, problem.to_json())

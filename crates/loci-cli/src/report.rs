@@ -4,7 +4,13 @@ use loci::{GroupId, Outcome, Report, System};
 use std::fmt::Write;
 
 /// Renders a report of solving `group`, comparing parameter values before and after.
-pub(crate) fn render(name: &str, group: GroupId, before: &System, after: &System, rep: &Report) -> String {
+pub(crate) fn render(
+    name: &str,
+    group: GroupId,
+    before: &System,
+    after: &System,
+    rep: &Report,
+) -> String {
     let mut s = String::new();
     let verdict = match rep.outcome {
         Outcome::Okay => "solved",
@@ -20,7 +26,11 @@ pub(crate) fn render(name: &str, group: GroupId, before: &System, after: &System
         "  size         {} unknowns, {} equations, {} components",
         rep.unknowns, rep.equations, rep.components
     );
-    let _ = writeln!(s, "  iterations   {}  (largest residual {:.3e})", rep.iterations, rep.residual);
+    let _ = writeln!(
+        s,
+        "  iterations   {}  (largest residual {:.3e})",
+        rep.iterations, rep.residual
+    );
     let label = match rep.outcome {
         Outcome::Okay => "failed",
         Outcome::RedundantOkay => "redundant",
@@ -36,7 +46,10 @@ pub(crate) fn render(name: &str, group: GroupId, before: &System, after: &System
             let _ = writeln!(s, "    {h} ({kind})");
         }
         for h in &rep.failed_entities {
-            let kind = after.entity(*h).map(|e| e.entity_type().name()).unwrap_or("?");
+            let kind = after
+                .entity(*h)
+                .map(|e| e.entity_type().name())
+                .unwrap_or("?");
             let _ = writeln!(s, "    {h} ({kind}, implicit condition)");
         }
     }
@@ -51,7 +64,13 @@ pub(crate) fn render(name: &str, group: GroupId, before: &System, after: &System
     } else {
         let _ = writeln!(s, "  moved parameters ({}):", moved.len());
         for (b, a) in moved.iter().take(40) {
-            let _ = writeln!(s, "    {:<12} {:>14.6} -> {:>14.6}", a.h.to_string(), b.val, a.val);
+            let _ = writeln!(
+                s,
+                "    {:<12} {:>14.6} -> {:>14.6}",
+                a.h.to_string(),
+                b.val,
+                a.val
+            );
         }
         if moved.len() > 40 {
             let _ = writeln!(s, "    ... and {} more", moved.len() - 40);

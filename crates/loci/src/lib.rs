@@ -41,7 +41,7 @@ mod solve;
 
 pub use error::{ModelError, SolveError};
 pub use model::{
-    Constraint, ConstraintId, ConstraintKind, Entity, EntityId, EntityKind, EntityType, GroupId, ObjectId, Param,
-    ParamId, PlaneRule, Signature, System, Want, FIELD_NAMES,
+    Constraint, ConstraintId, ConstraintKind, Entity, EntityId, EntityKind, EntityType, GroupId,
+    ObjectId, Param, ParamId, PlaneRule, Signature, System, Want, FIELD_NAMES,
 };
 pub use solve::{solve, Config, Outcome, Report};

@@ -8,14 +8,24 @@ use crate::geom::{Scalar, Vec3};
 fn radius<S: Scalar>(ent: &Ent, g: &Geo<S>) -> S {
     match ent {
         Ent::Circle { radius, .. } => g.p(*radius),
-        Ent::Arc { center, start, wp, .. } => g.at(start, Some(wp)).minus(g.at(center, Some(wp))).norm(),
+        Ent::Arc {
+            center, start, wp, ..
+        } => g.at(start, Some(wp)).minus(g.at(center, Some(wp))).norm(),
         _ => unreachable!("validated: a circle or an arc"),
     }
 }
 
 /// The angle an arc sweeps counter-clockwise from start to end, in (0, 2 pi].
 fn sweep<S: Scalar>(ent: &Ent, g: &Geo<S>) -> S {
-    let Ent::Arc { center, start, end, wp } = ent else { unreachable!("validated: an arc") };
+    let Ent::Arc {
+        center,
+        start,
+        end,
+        wp,
+    } = ent
+    else {
+        unreachable!("validated: an arc")
+    };
     let c = g.at(center, Some(wp));
     let (a, b) = (g.at(start, Some(wp)).minus(c), g.at(end, Some(wp)).minus(c));
     let t = a.cross(b).z.atan2(a.dot(b));
@@ -32,13 +42,20 @@ fn arc_length<S: Scalar>(ent: &Ent, g: &Geo<S>) -> S {
 }
 
 fn line_length<S: Scalar>(ent: &Ent, g: &Geo<S>) -> S {
-    let Ent::Line(l) = ent else { unreachable!("validated: a line") };
+    let Ent::Line(l) = ent else {
+        unreachable!("validated: a line")
+    };
     g.pos(&l[1]).minus(g.pos(&l[0])).norm()
 }
 
 /// An arc's implicit condition: start and end are equally far from the centre.
 pub(super) fn arc_radii<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
-    let Ent::Arc { center, end, wp, .. } = e.ent(0) else { unreachable!("an arc") };
+    let Ent::Arc {
+        center, end, wp, ..
+    } = e.ent(0)
+    else {
+        unreachable!("an arc")
+    };
     let r_end = g.at(end, Some(wp)).minus(g.at(center, Some(wp))).norm();
     out.push(radius(e.ent(0), g) - r_end);
 }
@@ -80,7 +97,12 @@ pub(super) enum ArcRel {
     ArcLineDiff,
 }
 
-pub(super) fn arc_length_relation<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>, rel: ArcRel) {
+pub(super) fn arc_length_relation<S: Scalar>(
+    e: &Equation,
+    g: &Geo<S>,
+    out: &mut Rows<S>,
+    rel: ArcRel,
+) {
     let (a, b) = (e.ent(0), e.ent(1));
     out.push(match rel {
         ArcRel::LineEqual => line_length(a, g) - arc_length(b, g),
@@ -93,7 +115,15 @@ pub(super) fn arc_length_relation<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut
 
 /// The radius vector of an arc at its start (or end with `at_end`), in the workplane.
 pub(super) fn arc_radius_vector<S: Scalar>(ent: &Ent, g: &Geo<S>, at_end: bool) -> Vec3<S> {
-    let Ent::Arc { center, start, end, wp } = ent else { unreachable!("validated: an arc") };
+    let Ent::Arc {
+        center,
+        start,
+        end,
+        wp,
+    } = ent
+    else {
+        unreachable!("validated: an arc")
+    };
     let p = if at_end { end } else { start };
     g.at(p, Some(wp)).minus(g.at(center, Some(wp)))
 }
@@ -105,7 +135,9 @@ pub(super) fn choose_arc_line(_e: &Equation, _g: &Geo<f64>) -> u8 {
 /// Arc `entity_a` is tangent to line `entity_b` at its start (end with `other`): the line is
 /// perpendicular to the radius there.
 pub(super) fn arc_line_tangent<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
-    let Ent::Arc { wp, .. } = e.ent(0) else { unreachable!("validated: an arc") };
+    let Ent::Arc { wp, .. } = e.ent(0) else {
+        unreachable!("validated: an arc")
+    };
     let r = arc_radius_vector(e.ent(0), g, e.other);
     let d = g.line_dir(e.line(1), Some(wp));
     out.push(r.dot(d) / (r.norm() * d.norm()));

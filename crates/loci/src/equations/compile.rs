@@ -36,7 +36,11 @@ impl Kernel {
 
 /// Compiles every constraint of `group` and the implicit equations of its entities, reading
 /// `values` (one per parameter, in [`System::params`] order) to pick branches.
-pub(crate) fn compile_group(sys: &System, group: GroupId, values: &[f64]) -> Result<Vec<Compiled>, ModelError> {
+pub(crate) fn compile_group(
+    sys: &System,
+    group: GroupId,
+    values: &[f64],
+) -> Result<Vec<Compiled>, ModelError> {
     let r = Resolver { sys };
     let mut out = Vec::new();
     let mut x = Vec::new();
@@ -83,11 +87,19 @@ fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec
         eq.target = [p.x, p.y, p.z];
     }
     let rows = eq.rows(x);
-    Compiled::Kernel(Kernel { owner, locals: l.params, eq, rows })
+    Compiled::Kernel(Kernel {
+        owner,
+        locals: l.params,
+        eq,
+        rows,
+    })
 }
 
 /// Resolves a constraint without substitution: the equation and its locals.
-pub(crate) fn resolve_constraint(r: &Resolver<'_>, c: &Constraint) -> Result<(Equation, Locals), ModelError> {
+pub(crate) fn resolve_constraint(
+    r: &Resolver<'_>,
+    c: &Constraint,
+) -> Result<(Equation, Locals), ModelError> {
     let owner = ObjectId::Constraint(c.h);
     let mut l = Locals::default();
     let sig = c.kind.signature();
@@ -96,12 +108,19 @@ pub(crate) fn resolve_constraint(r: &Resolver<'_>, c: &Constraint) -> Result<(Eq
         (_, Some(h)) => match r.entity(owner, h, &mut l)? {
             Ent::Workplane(f) => Some(f),
             _ => {
-                return Err(ModelError::MissingField { owner, field: "workplane", expected: "a workplane" });
+                return Err(ModelError::MissingField {
+                    owner,
+                    field: "workplane",
+                    expected: "a workplane",
+                });
             }
         },
     };
     if sig.plane == PlaneRule::Required && wp.is_none() {
-        return Err(ModelError::NeedsWorkplane { constraint: c.h, kind: c.kind });
+        return Err(ModelError::NeedsWorkplane {
+            constraint: c.h,
+            kind: c.kind,
+        });
     }
     let mut pts = [None, None];
     for (slot, h) in pts.iter_mut().zip([c.pt_a, c.pt_b]) {
@@ -109,13 +128,20 @@ pub(crate) fn resolve_constraint(r: &Resolver<'_>, c: &Constraint) -> Result<(Eq
             match r.entity(owner, h, &mut l)? {
                 Ent::Point(p) => *slot = Some(p),
                 _ => {
-                    return Err(ModelError::MissingField { owner, field: "pt_a/pt_b", expected: "a point" });
+                    return Err(ModelError::MissingField {
+                        owner,
+                        field: "pt_a/pt_b",
+                        expected: "a point",
+                    });
                 }
             }
         }
     }
     let mut ents = Vec::new();
-    for h in [c.entity_a, c.entity_b, c.entity_c, c.entity_d].into_iter().flatten() {
+    for h in [c.entity_a, c.entity_b, c.entity_c, c.entity_d]
+        .into_iter()
+        .flatten()
+    {
         ents.push(r.entity(owner, h, &mut l)?);
     }
     let eq = Equation {
@@ -156,7 +182,11 @@ fn compile_constraint(
         K::PointsCoincident => {
             if let (Some(a), Some(b)) = (native(eq.pt(0), eq.wp()), native(eq.pt(1), eq.wp())) {
                 for (sa, sb) in a.into_iter().zip(b) {
-                    out.push(Compiled::Equal { owner, a: p(sa), b: p(sb) });
+                    out.push(Compiled::Equal {
+                        owner,
+                        a: p(sa),
+                        b: p(sb),
+                    });
                 }
                 return Ok(());
             }
@@ -168,27 +198,45 @@ fn compile_constraint(
             };
             if let (Some(a), Some(b)) = (native(&pa, eq.wp()), native(&pb, eq.wp())) {
                 let i = if c.kind == K::Horizontal { 1 } else { 0 };
-                out.push(Compiled::Equal { owner, a: p(a[i]), b: p(b[i]) });
+                out.push(Compiled::Equal {
+                    owner,
+                    a: p(a[i]),
+                    b: p(b[i]),
+                });
                 return Ok(());
             }
         }
         K::WhereDragged => {
             if let Some(a) = native(eq.pt(0), eq.wp()) {
                 for s in a {
-                    out.push(Compiled::Fix { owner, p: p(s), value: values[p(s)] });
+                    out.push(Compiled::Fix {
+                        owner,
+                        p: p(s),
+                        value: values[p(s)],
+                    });
                 }
                 return Ok(());
             }
         }
         K::EqualRadius => {
-            if let (Ent::Circle { radius: ra, .. }, Ent::Circle { radius: rb, .. }) = (eq.ent(0), eq.ent(1)) {
-                out.push(Compiled::Equal { owner, a: p(*ra), b: p(*rb) });
+            if let (Ent::Circle { radius: ra, .. }, Ent::Circle { radius: rb, .. }) =
+                (eq.ent(0), eq.ent(1))
+            {
+                out.push(Compiled::Equal {
+                    owner,
+                    a: p(*ra),
+                    b: p(*rb),
+                });
                 return Ok(());
             }
         }
         K::Diameter => {
             if let Ent::Circle { radius, .. } = eq.ent(0) {
-                out.push(Compiled::Fix { owner, p: p(*radius), value: c.val / 2.0 });
+                out.push(Compiled::Fix {
+                    owner,
+                    p: p(*radius),
+                    value: c.val / 2.0,
+                });
                 return Ok(());
             }
         }

@@ -43,7 +43,9 @@ pub(super) fn pt_on_line<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>)
     let l = e.line(0);
     let a = g.at(&l[0], w);
     let d = g.at(&l[1], w).minus(a);
-    let c = d.cross(g.at(e.pt(0), w).minus(a)).scale(S::cst(1.0) / d.norm());
+    let c = d
+        .cross(g.at(e.pt(0), w).minus(a))
+        .scale(S::cst(1.0) / d.norm());
     match w {
         Some(_) => out.push(c.z),
         None => push_two(c, e.choice, out),
@@ -58,7 +60,12 @@ pub(super) enum Relation {
 }
 
 /// `|A| = |B|`, `|A| = val |B|` or `|A| - |B| = val`.
-pub(super) fn length_relation<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>, rel: Relation) {
+pub(super) fn length_relation<S: Scalar>(
+    e: &Equation,
+    g: &Geo<S>,
+    out: &mut Rows<S>,
+    rel: Relation,
+) {
     let (a, b) = (length(g, e.line(0), e.wp()), length(g, e.line(1), e.wp()));
     out.push(match rel {
         Relation::Equal => a - b,

@@ -62,7 +62,10 @@ pub(crate) struct Rows<S> {
 
 impl<S: Scalar> Rows<S> {
     pub fn new() -> Self {
-        Self { v: [S::cst(0.0); 4], n: 0 }
+        Self {
+            v: [S::cst(0.0); 4],
+            n: 0,
+        }
     }
 
     #[inline]
@@ -77,7 +80,9 @@ impl<S: Scalar> Rows<S> {
 impl Equation {
     pub fn pt(&self, i: usize) -> &PointRef {
         // Validation guarantees the fields a kind uses are present.
-        self.pts[i].as_ref().expect("validated: point field present")
+        self.pts[i]
+            .as_ref()
+            .expect("validated: point field present")
     }
 
     pub fn ent(&self, i: usize) -> &Ent {
@@ -129,7 +134,9 @@ impl Equation {
             K::PtOnLine => lines::pt_on_line(self, &g, out),
             K::EqualLengthLines => lines::length_relation(self, &g, out, lines::Relation::Equal),
             K::LengthRatio => lines::length_relation(self, &g, out, lines::Relation::Ratio),
-            K::LengthDifference => lines::length_relation(self, &g, out, lines::Relation::Difference),
+            K::LengthDifference => {
+                lines::length_relation(self, &g, out, lines::Relation::Difference)
+            }
             K::EqLenPtLineD => lines::eq_len_pt_line_d(self, &g, out),
             K::EqPtLnDistances => lines::eq_pt_ln_distances(self, &g, out),
             K::EqualAngle => lines::equal_angle(self, &g, out),
@@ -139,11 +146,21 @@ impl Equation {
             K::Diameter => circles::diameter(self, &g, out),
             K::PtOnCircle => circles::pt_on_circle(self, &g, out),
             K::EqualRadius => circles::equal_radius(self, &g, out),
-            K::EqualLineArcLen => circles::arc_length_relation(self, &g, out, circles::ArcRel::LineEqual),
-            K::ArcArcLenRatio => circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcArcRatio),
-            K::ArcLineLenRatio => circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcLineRatio),
-            K::ArcArcDifference => circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcArcDiff),
-            K::ArcLineDifference => circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcLineDiff),
+            K::EqualLineArcLen => {
+                circles::arc_length_relation(self, &g, out, circles::ArcRel::LineEqual)
+            }
+            K::ArcArcLenRatio => {
+                circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcArcRatio)
+            }
+            K::ArcLineLenRatio => {
+                circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcLineRatio)
+            }
+            K::ArcArcDifference => {
+                circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcArcDiff)
+            }
+            K::ArcLineDifference => {
+                circles::arc_length_relation(self, &g, out, circles::ArcRel::ArcLineDiff)
+            }
             K::ArcLineTangent => circles::arc_line_tangent(self, &g, out),
             K::CubicLineTangent => curves::cubic_line_tangent(self, &g, out),
             K::CurveCurveTangent => curves::curve_curve_tangent(self, &g, out),
@@ -162,7 +179,9 @@ impl Equation {
             EqKind::Constraint(K::EqualAngle) => lines::choose_equal_angle(self, &g),
             EqKind::Constraint(K::CubicLineTangent) => curves::choose_cubic_line(self, &g),
             EqKind::Constraint(K::Symmetric) => points::choose_symmetric(self, &g),
-            EqKind::Constraint(K::SameOrientation) => orientation::choose_same_orientation(self, &g),
+            EqKind::Constraint(K::SameOrientation) => {
+                orientation::choose_same_orientation(self, &g)
+            }
             EqKind::Constraint(K::CurveCurveTangent) => curves::choose_curve_curve(self, &g),
             EqKind::Constraint(K::ArcLineTangent) => circles::choose_arc_line(self, &g),
             _ => 0,
@@ -193,7 +212,13 @@ impl Equation {
         }
     }
 
-    fn jacobian_chunk<const N: usize>(&self, x: &[f64], start: usize, res: &mut [f64], jac: &mut [f64]) {
+    fn jacobian_chunk<const N: usize>(
+        &self,
+        x: &[f64],
+        start: usize,
+        res: &mut [f64],
+        jac: &mut [f64],
+    ) {
         let n = x.len();
         let mut xd = [Dual::<N>::cst(0.0); 64];
         let mut heap;

@@ -111,7 +111,12 @@ pub(super) fn symmetric<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) 
 
 /// Symmetric about an axis of the workplane: `horizontal` mirrors across the vertical axis
 /// (same v, opposite u); otherwise across the horizontal axis (same u, opposite v).
-pub(super) fn symmetric_axis<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>, horizontal: bool) {
+pub(super) fn symmetric_axis<S: Scalar>(
+    e: &Equation,
+    g: &Geo<S>,
+    out: &mut Rows<S>,
+    horizontal: bool,
+) {
     let (a, b) = (g.at(e.pt(0), e.wp()), g.at(e.pt(1), e.wp()));
     if horizontal {
         out.push(a.y - b.y);
@@ -149,7 +154,12 @@ pub(super) fn at_midpoint<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>
 }
 
 /// A line (or `pt_a`–`pt_b`) is horizontal (equal v) or vertical (equal u) in the workplane.
-pub(super) fn horizontal_vertical<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>, horizontal: bool) {
+pub(super) fn horizontal_vertical<S: Scalar>(
+    e: &Equation,
+    g: &Geo<S>,
+    out: &mut Rows<S>,
+    horizontal: bool,
+) {
     let w = e.wp();
     let (a, b) = match e.ents.first() {
         Some(Ent::Line(l)) => (g.at(&l[0], w), g.at(&l[1], w)),

@@ -31,8 +31,17 @@ pub(crate) enum Ent {
     Workplane(Frame),
     Line([PointRef; 2]),
     Cubic([PointRef; 4]),
-    Circle { center: PointRef, q: [Slot; 4], radius: Slot },
-    Arc { center: PointRef, start: PointRef, end: PointRef, wp: Frame },
+    Circle {
+        center: PointRef,
+        q: [Slot; 4],
+        radius: Slot,
+    },
+    Arc {
+        center: PointRef,
+        start: PointRef,
+        end: PointRef,
+        wp: Frame,
+    },
 }
 
 /// The parameters one equation reads, as positions in [`System::params`].
@@ -58,7 +67,12 @@ pub(crate) struct Resolver<'a> {
 }
 
 impl Resolver<'_> {
-    fn param(&self, owner: EntityId, h: crate::model::ParamId, l: &mut Locals) -> Result<Slot, ModelError> {
+    fn param(
+        &self,
+        owner: EntityId,
+        h: crate::model::ParamId,
+        l: &mut Locals,
+    ) -> Result<Slot, ModelError> {
         let i = self.sys.param_index(h).ok_or(ModelError::Dangling {
             owner: ObjectId::Entity(owner),
             field: "params",
@@ -82,7 +96,12 @@ impl Resolver<'_> {
     }
 
     fn dangling(owner: ObjectId, h: EntityId) -> ModelError {
-        ModelError::Dangling { owner, field: "entity", target: "entity", handle: h.0 }
+        ModelError::Dangling {
+            owner,
+            field: "entity",
+            target: "entity",
+            handle: h.0,
+        }
     }
 
     /// Resolves entity `h`; `owner` is named in errors.
@@ -90,7 +109,13 @@ impl Resolver<'_> {
         self.entity_depth(owner, h, l, 0)
     }
 
-    fn entity_depth(&self, owner: ObjectId, h: EntityId, l: &mut Locals, depth: u32) -> Result<Ent, ModelError> {
+    fn entity_depth(
+        &self,
+        owner: ObjectId,
+        h: EntityId,
+        l: &mut Locals,
+        depth: u32,
+    ) -> Result<Ent, ModelError> {
         if depth > 4 {
             return Err(ModelError::Cycle { entity: h });
         }
@@ -115,10 +140,15 @@ impl Resolver<'_> {
             }
         };
         Ok(match &e.kind {
-            EntityKind::PointIn3d { params } => Ent::Point(PointRef::P3(self.params(h, params, l)?)),
+            EntityKind::PointIn3d { params } => {
+                Ent::Point(PointRef::P3(self.params(h, params, l)?))
+            }
             EntityKind::PointIn2d { params } => {
                 let wp = frame_of(l)?;
-                Ent::Point(PointRef::P2 { wp, uv: self.params(h, params, l)? })
+                Ent::Point(PointRef::P2 {
+                    wp,
+                    uv: self.params(h, params, l)?,
+                })
             }
             EntityKind::NormalIn3d { params } => Ent::Normal(self.params(h, params, l)?),
             EntityKind::NormalIn2d => Ent::Normal(frame_of(l)?.q),
@@ -132,16 +162,26 @@ impl Resolver<'_> {
                     Ent::Normal(q) => q,
                     _ => return Err(self.wrong(me, *normal, "a normal")),
                 };
-                Ent::Workplane(Frame { id: h, origin: o, q })
+                Ent::Workplane(Frame {
+                    id: h,
+                    origin: o,
+                    q,
+                })
             }
-            EntityKind::LineSegment { points } => Ent::Line([point(l, points[0])?, point(l, points[1])?]),
+            EntityKind::LineSegment { points } => {
+                Ent::Line([point(l, points[0])?, point(l, points[1])?])
+            }
             EntityKind::Cubic { points } => Ent::Cubic([
                 point(l, points[0])?,
                 point(l, points[1])?,
                 point(l, points[2])?,
                 point(l, points[3])?,
             ]),
-            EntityKind::Circle { center, normal, radius } => {
+            EntityKind::Circle {
+                center,
+                normal,
+                radius,
+            } => {
                 let center = point(l, *center)?;
                 let q = match sub(l, *normal)? {
                     Ent::Normal(q) => q,
@@ -153,16 +193,29 @@ impl Resolver<'_> {
                 };
                 Ent::Circle { center, q, radius }
             }
-            EntityKind::ArcOfCircle { center, start, end, .. } => {
+            EntityKind::ArcOfCircle {
+                center, start, end, ..
+            } => {
                 let wp = frame_of(l)?;
-                Ent::Arc { center: point(l, *center)?, start: point(l, *start)?, end: point(l, *end)?, wp }
+                Ent::Arc {
+                    center: point(l, *center)?,
+                    start: point(l, *start)?,
+                    end: point(l, *end)?,
+                    wp,
+                }
             }
         })
     }
 
     fn wrong(&self, owner: ObjectId, h: EntityId, expected: &'static str) -> ModelError {
         match self.sys.entity(h) {
-            Some(e) => ModelError::WrongKind { owner, field: "entity", entity: h, found: e.entity_type(), expected },
+            Some(e) => ModelError::WrongKind {
+                owner,
+                field: "entity",
+                entity: h,
+                found: e.entity_type(),
+                expected,
+            },
             None => Self::dangling(owner, h),
         }
     }
@@ -181,7 +234,12 @@ impl<S: Scalar> Geo<'_, S> {
 
     #[inline]
     pub fn quat(&self, q: [Slot; 4]) -> Quat<S> {
-        Quat { w: self.p(q[0]), x: self.p(q[1]), y: self.p(q[2]), z: self.p(q[3]) }
+        Quat {
+            w: self.p(q[0]),
+            x: self.p(q[1]),
+            y: self.p(q[2]),
+            z: self.p(q[3]),
+        }
     }
 
     #[inline]

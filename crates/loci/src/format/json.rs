@@ -87,7 +87,13 @@ impl Problem {
     #[must_use]
     pub fn request(&self) -> SolveRequest {
         self.solve.clone().unwrap_or_else(|| SolveRequest {
-            group: self.system.constraints().iter().map(|c| c.group).max().unwrap_or(GroupId(1)),
+            group: self
+                .system
+                .constraints()
+                .iter()
+                .map(|c| c.group)
+                .max()
+                .unwrap_or(GroupId(1)),
             dragged: Vec::new(),
             calculate_failed: true,
             options: Options::default(),
@@ -144,7 +150,12 @@ impl SolveResult {
             failed_entities: report.failed_entities.clone(),
             iterations: report.iterations,
             residual: report.residual,
-            params: sys.params().iter().filter(|p| p.group == group).map(|p| ParamValue { h: p.h, val: p.val }).collect(),
+            params: sys
+                .params()
+                .iter()
+                .filter(|p| p.group == group)
+                .map(|p| ParamValue { h: p.h, val: p.val })
+                .collect(),
         }
     }
 

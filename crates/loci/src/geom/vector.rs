@@ -23,7 +23,11 @@ impl<S: Scalar> Vec3<S> {
     /// A 2D vector (z = 0).
     #[inline]
     pub fn uv(u: S, v: S) -> Self {
-        Self { x: u, y: v, z: S::cst(0.0) }
+        Self {
+            x: u,
+            y: v,
+            z: S::cst(0.0),
+        }
     }
 
     /// Sum.
@@ -64,7 +68,11 @@ impl<S: Scalar> Vec3<S> {
     #[inline]
     #[must_use]
     pub fn cross(self, o: Self) -> Self {
-        Self::new(self.y * o.z - self.z * o.y, self.z * o.x - self.x * o.z, self.x * o.y - self.y * o.x)
+        Self::new(
+            self.y * o.z - self.z * o.y,
+            self.z * o.x - self.x * o.z,
+            self.x * o.y - self.y * o.x,
+        )
     }
 
     /// Length.
@@ -108,21 +116,33 @@ impl<S: Scalar> Quat<S> {
     #[inline]
     pub fn u(self) -> Vec3<S> {
         let Quat { w, x, y, z } = self;
-        Vec3::new(w * w + x * x - y * y - z * z, (w * z + x * y) * 2.0, (x * z - w * y) * 2.0)
+        Vec3::new(
+            w * w + x * x - y * y - z * z,
+            (w * z + x * y) * 2.0,
+            (x * z - w * y) * 2.0,
+        )
     }
 
     /// The rotated y axis: the plane's V direction.
     #[inline]
     pub fn v(self) -> Vec3<S> {
         let Quat { w, x, y, z } = self;
-        Vec3::new((x * y - w * z) * 2.0, w * w - x * x + y * y - z * z, (w * x + y * z) * 2.0)
+        Vec3::new(
+            (x * y - w * z) * 2.0,
+            w * w - x * x + y * y - z * z,
+            (w * x + y * z) * 2.0,
+        )
     }
 
     /// The rotated z axis: the plane's normal N.
     #[inline]
     pub fn n(self) -> Vec3<S> {
         let Quat { w, x, y, z } = self;
-        Vec3::new((w * y + x * z) * 2.0, (y * z - w * x) * 2.0, w * w - x * x - y * y + z * z)
+        Vec3::new(
+            (w * y + x * z) * 2.0,
+            (y * z - w * x) * 2.0,
+            w * w - x * x - y * y + z * z,
+        )
     }
 
     /// Squared length (1 for a rotation).
@@ -147,7 +167,12 @@ impl<S: Scalar> Quat<S> {
     #[inline]
     #[must_use]
     pub fn conj(self) -> Self {
-        Quat { w: self.w, x: -self.x, y: -self.y, z: -self.z }
+        Quat {
+            w: self.w,
+            x: -self.x,
+            y: -self.y,
+            z: -self.z,
+        }
     }
 }
 
@@ -155,7 +180,11 @@ impl<S: Scalar> Quat<S> {
 /// `Slvs_MakeQuaternion` computes it.
 #[must_use]
 pub fn quaternion_from_uv(u: [f64; 3], v: [f64; 3]) -> [f64; 4] {
-    let n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]];
+    let n = [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ];
     // Rotation matrix with columns U, V, N; the standard trace-based extraction, choosing
     // the largest of w, x, y, z to divide by for accuracy.
     let (m00, m01, m02) = (u[0], v[0], n[0]);
@@ -189,7 +218,12 @@ mod tests {
         let u = [a.cos(), a.sin(), 0.0];
         let v = [-a.sin() * 0.6, a.cos() * 0.6, 0.8];
         let q = quaternion_from_uv(u, v);
-        let q = Quat { w: q[0], x: q[1], y: q[2], z: q[3] };
+        let q = Quat {
+            w: q[0],
+            x: q[1],
+            y: q[2],
+            z: q[3],
+        };
         let (uu, vv) = (q.u(), q.v());
         for i in 0..3 {
             assert!((uu.at(i) - u[i]).abs() < 1e-12);
@@ -201,7 +235,12 @@ mod tests {
 
     #[test]
     fn identity_axes() {
-        let q = Quat { w: 1.0, x: 0.0, y: 0.0, z: 0.0 };
+        let q = Quat {
+            w: 1.0,
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+        };
         assert_eq!(q.u(), Vec3::new(1.0, 0.0, 0.0));
         assert_eq!(q.v(), Vec3::new(0.0, 1.0, 0.0));
         assert_eq!(q.n(), Vec3::new(0.0, 0.0, 1.0));

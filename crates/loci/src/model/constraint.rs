@@ -263,7 +263,9 @@ pub struct Signature {
 }
 
 /// The names of the six reference fields, in [`Signature::fields`] order.
-pub const FIELD_NAMES: [&str; 6] = ["pt_a", "pt_b", "entity_a", "entity_b", "entity_c", "entity_d"];
+pub const FIELD_NAMES: [&str; 6] = [
+    "pt_a", "pt_b", "entity_a", "entity_b", "entity_c", "entity_d",
+];
 
 impl ConstraintKind {
     /// The fields this type needs and its workplane rule.
@@ -284,7 +286,11 @@ impl ConstraintKind {
                 ([p, N, Some(Workplane), N, N, N], Ignored)
             }
             K::PtLineDistance | K::PtOnLine | K::AtMidpoint => ([p, N, l, N, N, N], Either),
-            K::EqualLengthLines | K::LengthRatio | K::LengthDifference | K::Parallel | K::Perpendicular
+            K::EqualLengthLines
+            | K::LengthRatio
+            | K::LengthDifference
+            | K::Parallel
+            | K::Perpendicular
             | K::Angle => ([N, N, l, l, N, N], Either),
             K::EqLenPtLineD => ([p, N, l, l, N, N], Either),
             K::EqPtLnDistances => ([p, p, l, l, N, N], Either),
@@ -303,7 +309,9 @@ impl ConstraintKind {
             K::EqualRadius => ([N, N, Some(CircleOrArc), Some(CircleOrArc), N, N], Ignored),
             K::ProjPtDistance => ([p, p, Some(LineOrNormal), N, N, N], Ignored),
             K::WhereDragged => ([p, N, N, N, N, N], Either),
-            K::ArcArcLenRatio | K::ArcArcDifference => ([N, N, Some(Arc), Some(Arc), N, N], Ignored),
+            K::ArcArcLenRatio | K::ArcArcDifference => {
+                ([N, N, Some(Arc), Some(Arc), N, N], Ignored)
+            }
             K::ArcLineLenRatio | K::ArcLineDifference => ([N, N, Some(Arc), l, N, N], Ignored),
         };
         Signature { fields, plane }
@@ -404,7 +412,14 @@ impl Constraint {
     /// The six reference fields, in [`FIELD_NAMES`] order.
     #[must_use]
     pub fn fields(&self) -> [Option<EntityId>; 6] {
-        [self.pt_a, self.pt_b, self.entity_a, self.entity_b, self.entity_c, self.entity_d]
+        [
+            self.pt_a,
+            self.pt_b,
+            self.entity_a,
+            self.entity_b,
+            self.entity_c,
+            self.entity_d,
+        ]
     }
 }
 

@@ -182,19 +182,41 @@ impl EntityKind {
     #[must_use]
     pub fn references(&self) -> Vec<(&'static str, EntityId)> {
         match self {
-            EntityKind::Workplane { origin, normal } => vec![("origin", *origin), ("normal", *normal)],
-            EntityKind::LineSegment { points } => vec![("points[0]", points[0]), ("points[1]", points[1])],
+            EntityKind::Workplane { origin, normal } => {
+                vec![("origin", *origin), ("normal", *normal)]
+            }
+            EntityKind::LineSegment { points } => {
+                vec![("points[0]", points[0]), ("points[1]", points[1])]
+            }
             EntityKind::Cubic { points } => vec![
                 ("points[0]", points[0]),
                 ("points[1]", points[1]),
                 ("points[2]", points[2]),
                 ("points[3]", points[3]),
             ],
-            EntityKind::Circle { center, normal, radius } => {
-                vec![("center", *center), ("normal", *normal), ("radius", *radius)]
+            EntityKind::Circle {
+                center,
+                normal,
+                radius,
+            } => {
+                vec![
+                    ("center", *center),
+                    ("normal", *normal),
+                    ("radius", *radius),
+                ]
             }
-            EntityKind::ArcOfCircle { normal, center, start, end } => {
-                vec![("normal", *normal), ("center", *center), ("start", *start), ("end", *end)]
+            EntityKind::ArcOfCircle {
+                normal,
+                center,
+                start,
+                end,
+            } => {
+                vec![
+                    ("normal", *normal),
+                    ("center", *center),
+                    ("start", *start),
+                    ("end", *end),
+                ]
             }
             _ => Vec::new(),
         }
@@ -211,19 +233,40 @@ impl Entity {
     /// A 3D point.
     #[must_use]
     pub fn point_3d(h: u32, group: u32, params: [u32; 3]) -> Self {
-        Self::plain(h, group, None, EntityKind::PointIn3d { params: params.map(ParamId) })
+        Self::plain(
+            h,
+            group,
+            None,
+            EntityKind::PointIn3d {
+                params: params.map(ParamId),
+            },
+        )
     }
 
     /// A point in workplane `wp`.
     #[must_use]
     pub fn point_2d(h: u32, group: u32, wp: u32, params: [u32; 2]) -> Self {
-        Self::plain(h, group, Some(wp), EntityKind::PointIn2d { params: params.map(ParamId) })
+        Self::plain(
+            h,
+            group,
+            Some(wp),
+            EntityKind::PointIn2d {
+                params: params.map(ParamId),
+            },
+        )
     }
 
     /// A 3D normal from quaternion parameters w, x, y, z.
     #[must_use]
     pub fn normal_3d(h: u32, group: u32, params: [u32; 4]) -> Self {
-        Self::plain(h, group, None, EntityKind::NormalIn3d { params: params.map(ParamId) })
+        Self::plain(
+            h,
+            group,
+            None,
+            EntityKind::NormalIn3d {
+                params: params.map(ParamId),
+            },
+        )
     }
 
     /// The normal of workplane `wp`.
@@ -235,7 +278,14 @@ impl Entity {
     /// A distance (radius) entity.
     #[must_use]
     pub fn distance(h: u32, group: u32, wp: Option<u32>, param: u32) -> Self {
-        Self::plain(h, group, wp, EntityKind::Distance { param: ParamId(param) })
+        Self::plain(
+            h,
+            group,
+            wp,
+            EntityKind::Distance {
+                param: ParamId(param),
+            },
+        )
     }
 
     /// A workplane from an origin point and a normal.
@@ -245,25 +295,49 @@ impl Entity {
             h,
             group,
             None,
-            EntityKind::Workplane { origin: EntityId(origin), normal: EntityId(normal) },
+            EntityKind::Workplane {
+                origin: EntityId(origin),
+                normal: EntityId(normal),
+            },
         )
     }
 
     /// A line segment; `wp` is its workplane, or `None` in 3D.
     #[must_use]
     pub fn line(h: u32, group: u32, wp: Option<u32>, a: u32, b: u32) -> Self {
-        Self::plain(h, group, wp, EntityKind::LineSegment { points: [EntityId(a), EntityId(b)] })
+        Self::plain(
+            h,
+            group,
+            wp,
+            EntityKind::LineSegment {
+                points: [EntityId(a), EntityId(b)],
+            },
+        )
     }
 
     /// A cubic Bezier segment.
     #[must_use]
     pub fn cubic(h: u32, group: u32, wp: Option<u32>, points: [u32; 4]) -> Self {
-        Self::plain(h, group, wp, EntityKind::Cubic { points: points.map(EntityId) })
+        Self::plain(
+            h,
+            group,
+            wp,
+            EntityKind::Cubic {
+                points: points.map(EntityId),
+            },
+        )
     }
 
     /// A circle.
     #[must_use]
-    pub fn circle(h: u32, group: u32, wp: Option<u32>, center: u32, normal: u32, radius: u32) -> Self {
+    pub fn circle(
+        h: u32,
+        group: u32,
+        wp: Option<u32>,
+        center: u32,
+        normal: u32,
+        radius: u32,
+    ) -> Self {
         Self::plain(
             h,
             group,
@@ -278,7 +352,15 @@ impl Entity {
 
     /// An arc of a circle in workplane `wp`.
     #[must_use]
-    pub fn arc(h: u32, group: u32, wp: u32, normal: u32, center: u32, start: u32, end: u32) -> Self {
+    pub fn arc(
+        h: u32,
+        group: u32,
+        wp: u32,
+        normal: u32,
+        center: u32,
+        start: u32,
+        end: u32,
+    ) -> Self {
         Self::plain(
             h,
             group,
@@ -293,6 +375,11 @@ impl Entity {
     }
 
     fn plain(h: u32, group: u32, wp: Option<u32>, kind: EntityKind) -> Self {
-        Self { h: EntityId(h), group: GroupId(group), workplane: wp.map(EntityId), kind }
+        Self {
+            h: EntityId(h),
+            group: GroupId(group),
+            workplane: wp.map(EntityId),
+            kind,
+        }
     }
 }

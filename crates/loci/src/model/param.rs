@@ -18,6 +18,10 @@ impl Param {
     /// A parameter with handle `h` in `group`, starting at `val`.
     #[must_use]
     pub fn new(h: impl Into<ParamId>, group: impl Into<GroupId>, val: f64) -> Self {
-        Self { h: h.into(), group: group.into(), val }
+        Self {
+            h: h.into(),
+            group: group.into(),
+            val,
+        }
     }
 }

@@ -32,13 +32,22 @@ impl System {
     /// A zero or repeated handle, or a value that is not finite.
     pub fn add_param(&mut self, p: Param) -> Result<ParamId, ModelError> {
         if p.h.is_zero() {
-            return Err(ModelError::ZeroHandle { what: "param", index: self.params.len() });
+            return Err(ModelError::ZeroHandle {
+                what: "param",
+                index: self.params.len(),
+            });
         }
         if self.param_ix.contains_key(&p.h) {
-            return Err(ModelError::DuplicateHandle { object: ObjectId::Param(p.h) });
+            return Err(ModelError::DuplicateHandle {
+                object: ObjectId::Param(p.h),
+            });
         }
         if !p.val.is_finite() {
-            return Err(ModelError::NonFinite { owner: ObjectId::Param(p.h), field: "val", value: p.val });
+            return Err(ModelError::NonFinite {
+                owner: ObjectId::Param(p.h),
+                field: "val",
+                value: p.val,
+            });
         }
         self.param_ix.insert(p.h, self.params.len());
         self.params.push(p);
@@ -51,10 +60,15 @@ impl System {
     /// A zero or repeated handle.
     pub fn add_entity(&mut self, e: Entity) -> Result<EntityId, ModelError> {
         if e.h.is_zero() {
-            return Err(ModelError::ZeroHandle { what: "entity", index: self.entities.len() });
+            return Err(ModelError::ZeroHandle {
+                what: "entity",
+                index: self.entities.len(),
+            });
         }
         if self.entity_ix.contains_key(&e.h) {
-            return Err(ModelError::DuplicateHandle { object: ObjectId::Entity(e.h) });
+            return Err(ModelError::DuplicateHandle {
+                object: ObjectId::Entity(e.h),
+            });
         }
         let h = e.h;
         self.entity_ix.insert(h, self.entities.len());
@@ -68,13 +82,22 @@ impl System {
     /// A zero or repeated handle, or a value that is not finite.
     pub fn add_constraint(&mut self, c: Constraint) -> Result<ConstraintId, ModelError> {
         if c.h.is_zero() {
-            return Err(ModelError::ZeroHandle { what: "constraint", index: self.constraints.len() });
+            return Err(ModelError::ZeroHandle {
+                what: "constraint",
+                index: self.constraints.len(),
+            });
         }
         if self.constraint_ix.contains_key(&c.h) {
-            return Err(ModelError::DuplicateHandle { object: ObjectId::Constraint(c.h) });
+            return Err(ModelError::DuplicateHandle {
+                object: ObjectId::Constraint(c.h),
+            });
         }
         if !c.val.is_finite() {
-            return Err(ModelError::NonFinite { owner: ObjectId::Constraint(c.h), field: "val", value: c.val });
+            return Err(ModelError::NonFinite {
+                owner: ObjectId::Constraint(c.h),
+                field: "val",
+                value: c.val,
+            });
         }
         let h = c.h;
         self.constraint_ix.insert(h, self.constraints.len());
@@ -166,7 +189,9 @@ impl System {
 
     /// Mutable access to a constraint, e.g. to change its value between solves.
     pub fn constraint_mut(&mut self, h: ConstraintId) -> Option<&mut Constraint> {
-        self.constraint_ix.get(&h).map(|&i| &mut self.constraints[i])
+        self.constraint_ix
+            .get(&h)
+            .map(|&i| &mut self.constraints[i])
     }
 
     /// Builds a system from lists, checking handles as [`System::add_param`] and friends do.
@@ -211,8 +236,12 @@ struct PartsRef<'a> {
 
 impl Serialize for System {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        PartsRef { params: &self.params, entities: &self.entities, constraints: &self.constraints }
-            .serialize(s)
+        PartsRef {
+            params: &self.params,
+            entities: &self.entities,
+            constraints: &self.constraints,
+        }
+        .serialize(s)
     }
 }
 

@@ -22,13 +22,20 @@ impl System {
         Ok(())
     }
 
-    fn entity_of(&self, owner: ObjectId, field: &'static str, h: EntityId) -> Result<EntityType, ModelError> {
-        self.entity(h).map(|e| e.entity_type()).ok_or(ModelError::Dangling {
-            owner,
-            field,
-            target: "entity",
-            handle: h.0,
-        })
+    fn entity_of(
+        &self,
+        owner: ObjectId,
+        field: &'static str,
+        h: EntityId,
+    ) -> Result<EntityType, ModelError> {
+        self.entity(h)
+            .map(|e| e.entity_type())
+            .ok_or(ModelError::Dangling {
+                owner,
+                field,
+                target: "entity",
+                handle: h.0,
+            })
     }
 
     fn expect(
@@ -43,17 +50,30 @@ impl System {
         if ok(found) {
             Ok(())
         } else {
-            Err(ModelError::WrongKind { owner, field, entity: h, found, expected })
+            Err(ModelError::WrongKind {
+                owner,
+                field,
+                entity: h,
+                found,
+                expected,
+            })
         }
     }
 
     fn validate_entity(&self, h: EntityId) -> Result<(), ModelError> {
-        let Some(e) = self.entity(h) else { return Ok(()) };
+        let Some(e) = self.entity(h) else {
+            return Ok(());
+        };
         let owner = ObjectId::Entity(h);
         for (i, p) in e.kind.params().iter().enumerate() {
             if self.param(*p).is_none() {
                 const NAMES: [&str; 4] = ["params[0]", "params[1]", "params[2]", "params[3]"];
-                return Err(ModelError::Dangling { owner, field: NAMES[i], target: "param", handle: p.0 });
+                return Err(ModelError::Dangling {
+                    owner,
+                    field: NAMES[i],
+                    target: "param",
+                    handle: p.0,
+                });
             }
         }
         let needs_wp = matches!(
@@ -65,30 +85,67 @@ impl System {
                 if wp == h {
                     return Err(ModelError::Cycle { entity: h });
                 }
-                self.expect(owner, "workplane", wp, |t| t == EntityType::Workplane, "a workplane")?;
+                self.expect(
+                    owner,
+                    "workplane",
+                    wp,
+                    |t| t == EntityType::Workplane,
+                    "a workplane",
+                )?;
             }
             None if needs_wp => {
-                return Err(ModelError::MissingField { owner, field: "workplane", expected: "a workplane" });
+                return Err(ModelError::MissingField {
+                    owner,
+                    field: "workplane",
+                    expected: "a workplane",
+                });
             }
             None => {}
         }
         let point = |t: EntityType| t.is_point();
         match &e.kind {
             EntityKind::Workplane { origin, normal } => {
-                self.expect(owner, "origin", *origin, |t| t == EntityType::PointIn3d, "a 3D point")?;
-                self.expect(owner, "normal", *normal, |t| t == EntityType::NormalIn3d, "a 3D normal")?;
+                self.expect(
+                    owner,
+                    "origin",
+                    *origin,
+                    |t| t == EntityType::PointIn3d,
+                    "a 3D point",
+                )?;
+                self.expect(
+                    owner,
+                    "normal",
+                    *normal,
+                    |t| t == EntityType::NormalIn3d,
+                    "a 3D normal",
+                )?;
             }
             EntityKind::LineSegment { .. } | EntityKind::Cubic { .. } => {
                 for (field, r) in e.kind.references() {
                     self.expect(owner, field, r, point, "a point")?;
                 }
             }
-            EntityKind::Circle { center, normal, radius } => {
+            EntityKind::Circle {
+                center,
+                normal,
+                radius,
+            } => {
                 self.expect(owner, "center", *center, point, "a point")?;
                 self.expect(owner, "normal", *normal, EntityType::is_normal, "a normal")?;
-                self.expect(owner, "radius", *radius, |t| t == EntityType::Distance, "a distance")?;
+                self.expect(
+                    owner,
+                    "radius",
+                    *radius,
+                    |t| t == EntityType::Distance,
+                    "a distance",
+                )?;
             }
-            EntityKind::ArcOfCircle { normal, center, start, end } => {
+            EntityKind::ArcOfCircle {
+                normal,
+                center,
+                start,
+                end,
+            } => {
                 self.expect(owner, "normal", *normal, EntityType::is_normal, "a normal")?;
                 self.expect(owner, "center", *center, point, "a point")?;
                 self.expect(owner, "start", *start, point, "a point")?;
@@ -102,21 +159,36 @@ impl System {
     fn validate_constraint(&self, c: &Constraint) -> Result<(), ModelError> {
         let owner = ObjectId::Constraint(c.h);
         if !c.val.is_finite() {
-            return Err(ModelError::NonFinite { owner, field: "val", value: c.val });
+            return Err(ModelError::NonFinite {
+                owner,
+                field: "val",
+                value: c.val,
+            });
         }
         let sig = c.kind.signature();
         match (sig.plane, c.workplane) {
             (PlaneRule::Required, None) => {
-                return Err(ModelError::NeedsWorkplane { constraint: c.h, kind: c.kind })
+                return Err(ModelError::NeedsWorkplane {
+                    constraint: c.h,
+                    kind: c.kind,
+                })
             }
             (PlaneRule::Either | PlaneRule::Required, Some(wp)) => {
-                self.expect(owner, "workplane", wp, |t| t == EntityType::Workplane, "a workplane")?;
+                self.expect(
+                    owner,
+                    "workplane",
+                    wp,
+                    |t| t == EntityType::Workplane,
+                    "a workplane",
+                )?;
             }
             _ => {}
         }
         let fields = c.fields();
-        let point_form = matches!(c.kind, super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical)
-            && c.entity_a.is_none();
+        let point_form = matches!(
+            c.kind,
+            super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical
+        ) && c.entity_a.is_none();
         for (i, want) in sig.fields.iter().enumerate() {
             let want = if point_form {
                 match i {
@@ -129,12 +201,19 @@ impl System {
             let Some(want) = want else { continue };
             let field = FIELD_NAMES[i];
             let Some(h) = fields[i] else {
-                let expected = if matches!(c.kind, super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical) {
+                let expected = if matches!(
+                    c.kind,
+                    super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical
+                ) {
                     "a line segment (or points in pt_a and pt_b)"
                 } else {
                     want.describe()
                 };
-                return Err(ModelError::MissingField { owner, field, expected });
+                return Err(ModelError::MissingField {
+                    owner,
+                    field,
+                    expected,
+                });
             };
             self.expect(owner, field, h, |t| want.accepts(t), want.describe())?;
         }

@@ -22,7 +22,13 @@ pub struct Config {
 
 impl Default for Config {
     fn default() -> Self {
-        Self { tolerance: 1e-10, max_iterations: 50, dragged_scale: 0.05, rank_tolerance: 1e-10, find_failed: true }
+        Self {
+            tolerance: 1e-10,
+            max_iterations: 50,
+            dragged_scale: 0.05,
+            rank_tolerance: 1e-10,
+            find_failed: true,
+        }
     }
 }
 
@@ -63,7 +69,13 @@ impl Config {
     }
 
     pub(crate) fn check(&self) -> Result<(), crate::SolveError> {
-        let bad = |name, value: f64, expected| Err(crate::SolveError::BadOption { name, value, expected });
+        let bad = |name, value: f64, expected| {
+            Err(crate::SolveError::BadOption {
+                name,
+                value,
+                expected,
+            })
+        };
         if !(self.tolerance > 0.0 && self.tolerance.is_finite()) {
             return bad("tolerance", self.tolerance, "a positive finite number");
         }

@@ -13,8 +13,8 @@
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::ldlt::factor::LdltRegularization;
 use faer::sparse::linalg::cholesky::{
-    factorize_symbolic_cholesky, CholeskySymbolicParams, LdltRef, SymbolicCholesky, SymbolicCholeskyRaw,
-    SymmetricOrdering,
+    factorize_symbolic_cholesky, CholeskySymbolicParams, LdltRef, SymbolicCholesky,
+    SymbolicCholeskyRaw, SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
@@ -45,7 +45,11 @@ impl Gram {
         for col in columns {
             for (i, &(ri, ai)) in col.iter().enumerate() {
                 for &(rj, aj) in &col[i..] {
-                    let (lo, hi, a, b) = if ri <= rj { (ri, rj, ai, aj) } else { (rj, ri, aj, ai) };
+                    let (lo, hi, a, b) = if ri <= rj {
+                        (ri, rj, ai, aj)
+                    } else {
+                        (rj, ri, aj, ai)
+                    };
                     pairs.push((hi, lo, a, b));
                 }
             }
@@ -97,7 +101,16 @@ impl Gram {
         ]);
         let mem = MemBuffer::try_new(req).ok()?;
         let l_values = vec![0.0; symbolic.len_val()];
-        Some(Self { n: nrows, pattern, vals: vec![0.0; nnz], contrib, symbolic, l_values, signs: vec![1; nrows], mem })
+        Some(Self {
+            n: nrows,
+            pattern,
+            vals: vec![0.0; nnz],
+            contrib,
+            symbolic,
+            l_values,
+            signs: vec![1; nrows],
+            mem,
+        })
     }
 
     /// Factorises `G` for the Jacobian values `jv`; pivots at or below `eps` are dropped.
@@ -115,13 +128,23 @@ impl Gram {
         };
         let stack = MemStack::new(&mut self.mem);
         self.symbolic
-            .factorize_numeric_ldlt(&mut self.l_values, a, Side::Upper, reg, Par::Seq, stack, Default::default())
+            .factorize_numeric_ldlt(
+                &mut self.l_values,
+                a,
+                Side::Upper,
+                reg,
+                Par::Seq,
+                stack,
+                Default::default(),
+            )
             .is_ok()
     }
 
     /// The rows whose pivots were dropped in the last factorisation, ascending.
     pub fn dropped(&self) -> Vec<usize> {
-        let SymbolicCholeskyRaw::Simplicial(s) = self.symbolic.raw() else { return Vec::new() };
+        let SymbolicCholeskyRaw::Simplicial(s) = self.symbolic.raw() else {
+            return Vec::new();
+        };
         let col_ptr = s.col_ptr();
         let mut out = Vec::new();
         for k in 0..self.n {

@@ -35,7 +35,12 @@ use substitute::Substitution;
 /// # Errors
 /// An invalid model (dangling or zero handles, wrong entity types, NaN values, a 2D-only
 /// constraint with no workplane), an unknown dragged parameter, or a bad option.
-pub fn solve(sys: &mut System, group: GroupId, dragged: &[ParamId], cfg: &Config) -> Result<Report, SolveError> {
+pub fn solve(
+    sys: &mut System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+) -> Result<Report, SolveError> {
     cfg.check()?;
     sys.validate()?;
     let params = sys.params();
@@ -181,7 +186,11 @@ pub fn solve(sys: &mut System, group: GroupId, dragged: &[ParamId], cfg: &Config
         comps[ci].1.push(c);
     }
     for (ki, k) in kernels.iter().enumerate() {
-        if let Some(c) = k.locals.iter().find_map(|&p| col_of_param(p as usize, &col_of_root)) {
+        if let Some(c) = k
+            .locals
+            .iter()
+            .find_map(|&p| col_of_param(p as usize, &col_of_root))
+        {
             let r = find(&mut comp_of_col, c) as usize;
             comps[comp_index[r] as usize].0.push(ki);
         }
@@ -212,8 +221,16 @@ pub fn solve(sys: &mut System, group: GroupId, dragged: &[ParamId], cfg: &Config
             }
             v
         };
-        let scale: Vec<f64> =
-            cols.iter().map(|&c| if root_dragged[col_root[c]] { cfg.dragged_scale } else { 1.0 }).collect();
+        let scale: Vec<f64> = cols
+            .iter()
+            .map(|&c| {
+                if root_dragged[col_root[c]] {
+                    cfg.dragged_scale
+                } else {
+                    1.0
+                }
+            })
+            .collect();
         let map = |p: usize| col_of_param(p, &col_of_root).map(|c| local[c as usize]);
         let mut comp = Component::new(&kernels, members, &map, cols.len(), scale);
         let mut x: Vec<f64> = cols.iter().map(|&c| x_all[c]).collect();

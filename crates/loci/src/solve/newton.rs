@@ -47,7 +47,13 @@ pub(crate) struct Component {
 }
 
 impl Component {
-    pub fn new(kernels: &[Kernel], members: &[usize], col_of_param: &dyn Fn(usize) -> Option<u32>, ncols: usize, scale: Vec<f64>) -> Self {
+    pub fn new(
+        kernels: &[Kernel],
+        members: &[usize],
+        col_of_param: &dyn Fn(usize) -> Option<u32>,
+        ncols: usize,
+        scale: Vec<f64>,
+    ) -> Self {
         let mut blocks = Vec::with_capacity(members.len());
         let mut columns: Vec<Vec<(u32, u32)>> = vec![Vec::new(); ncols];
         let mut row_block = Vec::new();
@@ -78,23 +84,48 @@ impl Component {
                 row_block.push((bi as u32, r as u8));
             }
             let n = cols.len();
-            blocks.push(Block { kernel: k, row0: row, jv0: jv, cols, slot_col });
+            blocks.push(Block {
+                kernel: k,
+                row0: row,
+                jv0: jv,
+                cols,
+                slot_col,
+            });
             row += kern.rows;
             jv += kern.rows * n;
         }
-        Self { blocks, rows: row, row_block, scale, columns, nnz: jv, gram: None }
+        Self {
+            blocks,
+            rows: row,
+            row_block,
+            scale,
+            columns,
+            nnz: jv,
+            gram: None,
+        }
     }
 
     fn gather(&self, b: &Block, kern: &Kernel, x: &[f64], values: &[f64], xs: &mut Vec<f64>) {
         xs.clear();
         for (s, &p) in kern.locals.iter().enumerate() {
             let c = b.slot_col[s];
-            xs.push(if c >= 0 { x[b.cols[c as usize] as usize] } else { values[p as usize] });
+            xs.push(if c >= 0 {
+                x[b.cols[c as usize] as usize]
+            } else {
+                values[p as usize]
+            });
         }
     }
 
     /// Residuals only.
-    fn residuals(&self, kernels: &[Kernel], x: &[f64], values: &[f64], r: &mut [f64], xs: &mut Vec<f64>) {
+    fn residuals(
+        &self,
+        kernels: &[Kernel],
+        x: &[f64],
+        values: &[f64],
+        r: &mut [f64],
+        xs: &mut Vec<f64>,
+    ) {
         for b in &self.blocks {
             let k = &kernels[b.kernel];
             self.gather(b, k, x, values, xs);
@@ -105,7 +136,16 @@ impl Component {
     }
 
     /// Residuals and Jacobian.
-    fn jacobian(&self, kernels: &[Kernel], x: &[f64], values: &[f64], r: &mut [f64], jv: &mut [f64], xs: &mut Vec<f64>, jl: &mut Vec<f64>) {
+    fn jacobian(
+        &self,
+        kernels: &[Kernel],
+        x: &[f64],
+        values: &[f64],
+        r: &mut [f64],
+        jv: &mut [f64],
+        xs: &mut Vec<f64>,
+        jl: &mut Vec<f64>,
+    ) {
         for b in &self.blocks {
             let k = &kernels[b.kernel];
             self.gather(b, k, x, values, xs);
@@ -128,7 +168,13 @@ impl Component {
     }
 
     /// Solves from `x` in place.
-    pub fn solve(&mut self, kernels: &[Kernel], x: &mut [f64], values: &[f64], cfg: &Config) -> Finish {
+    pub fn solve(
+        &mut self,
+        kernels: &[Kernel],
+        x: &mut [f64],
+        values: &[f64],
+        cfg: &Config,
+    ) -> Finish {
         let m = self.rows;
         let ncols = x.len();
         if self.gram.is_none() {
@@ -166,7 +212,9 @@ impl Component {
                     jn[idx as usize] *= inv[row as usize];
                 }
             }
-            let Some(gram) = self.gram.as_mut() else { break };
+            let Some(gram) = self.gram.as_mut() else {
+                break;
+            };
             factored = gram.factor(&jn, cfg.rank_tolerance);
             let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
             if max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite()) {
@@ -190,7 +238,12 @@ impl Component {
                 dx[c] = acc * self.scale[c];
             }
             // Backtracking on the normalised residual, the quantity the step minimises.
-            let merit = |r: &[f64]| r.iter().zip(&inv).map(|(a, b)| (a * b) * (a * b)).sum::<f64>();
+            let merit = |r: &[f64]| {
+                r.iter()
+                    .zip(&inv)
+                    .map(|(a, b)| (a * b) * (a * b))
+                    .sum::<f64>()
+            };
             let m0 = merit(&r);
             let mut alpha = 1.0;
             let mut accepted = false;
@@ -224,7 +277,8 @@ impl Component {
             fin.dropped = gram.dropped();
             if cfg.find_failed {
                 for &k in &fin.dropped {
-                    fin.dependencies.push(dependencies(gram, &self.columns, &jn, k, m));
+                    fin.dependencies
+                        .push(dependencies(gram, &self.columns, &jn, k, m));
                 }
             }
         } else {
@@ -237,10 +291,18 @@ impl Component {
 
 /// The rows that row `k` of the normalised Jacobian is a combination of: solve
 /// `G c = J J_kᵀ`; dropped rows get (almost) nothing, so `c` expresses row `k` in the others.
-fn dependencies(gram: &mut Gram, columns: &[Vec<(u32, u32)>], jn: &[f64], k: usize, m: usize) -> Vec<usize> {
+fn dependencies(
+    gram: &mut Gram,
+    columns: &[Vec<(u32, u32)>],
+    jn: &[f64],
+    k: usize,
+    m: usize,
+) -> Vec<usize> {
     let mut b = vec![0.0; m];
     for col in columns {
-        let Some(&(_, ik)) = col.iter().find(|&&(row, _)| row as usize == k) else { continue };
+        let Some(&(_, ik)) = col.iter().find(|&&(row, _)| row as usize == k) else {
+            continue;
+        };
         let vk = jn[ik as usize];
         for &(row, idx) in col {
             b[row as usize] += jn[idx as usize] * vk;

@@ -54,9 +54,13 @@ impl Substitution {
         if a == b {
             return Vec::new();
         }
-        let mut prev: std::collections::HashMap<u32, (u32, Owner)> = std::collections::HashMap::new();
+        let mut prev: std::collections::HashMap<u32, (u32, Owner)> =
+            std::collections::HashMap::new();
         let mut q = VecDeque::from([a as u32]);
-        prev.insert(a as u32, (a as u32, Owner::Entity(crate::model::EntityId(0))));
+        prev.insert(
+            a as u32,
+            (a as u32, Owner::Entity(crate::model::EntityId(0))),
+        );
         while let Some(x) = q.pop_front() {
             if x as usize == b {
                 break;
