@@ -1,0 +1,233 @@
+//! `loci-bench`: runs the comparison and writes `docs/benchmarks.md` and `docs/benchmarks.svg`.
+//!
+//! ```text
+//! loci-bench [--quick] [--out DIR] [--limit SECONDS] [--solvers loci,ezpz,...]
+//!            [--families chain,grid,...] [--max-size N] [--sizes N,N,...]
+//! loci-bench worker SOLVER PROBLEM.json REPS BUDGET_S OUT.json
+//! ```
+
+use anyhow::{bail, Context, Result};
+use loci_bench::compare::{compare, Settings};
+use loci_bench::problem::{Family, Problem};
+use loci_bench::report;
+use loci_bench::run::{run_in_process, Solver};
+use loci_bench::setup::setup;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+const USAGE: &str = "usage: loci-bench [--quick] [--out DIR] [--limit SECONDS] \
+[--solvers loci,ezpz,slvs_py,slvs_c,planegcs] [--families chain,triangles,grid,fillets,chain_3d] \
+[--max-size N] [--sizes N,N,...]";
+
+fn main() {
+    if let Err(e) = real_main() {
+        eprintln!("loci-bench: {e:#}");
+        std::process::exit(3);
+    }
+}
+
+fn real_main() -> Result<()> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.first().map(String::as_str) == Some("worker") {
+        return worker(&args[1..]);
+    }
+    let mut quick = false;
+    let mut out: Option<PathBuf> = None;
+    let mut limit: Option<f64> = None;
+    let mut solvers: Option<Vec<Solver>> = None;
+    let mut families: Option<Vec<Family>> = None;
+    let mut max_size: Option<usize> = None;
+    let mut sizes: Option<Vec<usize>> = None;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = || it.next().with_context(|| format!("{a} needs a value\n{USAGE}"));
+        match a.as_str() {
+            "--quick" => quick = true,
+            "--out" => out = Some(PathBuf::from(value()?)),
+            "--limit" => limit = Some(value()?.parse().context("--limit takes seconds")?),
+            "--max-size" => max_size = Some(value()?.parse().context("--max-size takes a number")?),
+            "--sizes" => {
+                sizes = Some(
+                    value()?
+                        .split(',')
+                        .map(|s| s.parse().with_context(|| format!("bad size {s}")))
+                        .collect::<Result<_>>()?,
+                );
+            }
+            "--solvers" => {
+                solvers = Some(
+                    value()?
+                        .split(',')
+                        .map(|s| Solver::from_name(s).with_context(|| format!("no solver {s}")))
+                        .collect::<Result<_>>()?,
+                );
+            }
+            "--families" => {
+                families = Some(
+                    value()?
+                        .split(',')
+                        .map(|s| {
+                            Family::ALL
+                                .into_iter()
+                                .find(|f| f.name() == s)
+                                .with_context(|| format!("no family {s}"))
+                        })
+                        .collect::<Result<_>>()?,
+                );
+            }
+            "-h" | "--help" => {
+                println!("{USAGE}");
+                return Ok(());
+            }
+            other => bail!("unknown argument {other}\n{USAGE}"),
+        }
+    }
+    let mut settings = Settings::new(quick);
+    if let Some(s) = solvers {
+        settings.solvers = s;
+    }
+    if let Some(f) = families {
+        settings.families = f;
+    }
+    if let Some(m) = max_size {
+        settings.max_size = m;
+    }
+    settings.sizes = sizes;
+    if let Some(l) = limit {
+        settings.limit = Duration::from_secs_f64(l);
+    }
+    let bench = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let repo = bench.parent().unwrap_or(bench);
+    let out = out.unwrap_or_else(|| {
+        if quick {
+            std::env::temp_dir().join("loci-bench-quick")
+        } else {
+            repo.join("docs")
+        }
+    });
+    std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+    let work = std::env::temp_dir().join(format!("loci-bench-{}", std::process::id()));
+    std::fs::create_dir_all(&work)?;
+
+    eprintln!("setting up peers ...");
+    let (runners, avail) = setup(bench, &bench.join(".build"), &settings.solvers);
+    for (s, a) in &avail {
+        match a {
+            Ok(v) => eprintln!("  {:<9} {v}", s.name()),
+            Err(e) => eprintln!("  {:<9} not available: {e}", s.name()),
+        }
+    }
+    let started = std::time::Instant::now();
+    let mut results = compare(&settings, &runners, &avail, &work, |line| eprintln!("{line}"));
+    let _ = std::fs::remove_dir_all(&work);
+    let command = if quick {
+        "cargo run --release -p loci-bench -- --quick".to_string()
+    } else {
+        "cargo run --release -p loci-bench".to_string()
+    };
+    let m = &mut results.meta;
+    m.insert("date".into(), today_utc());
+    m.insert("machine".into(), cpu_model());
+    m.insert(
+        "cores".into(),
+        std::thread::available_parallelism().map_or("?".into(), |n| n.to_string()),
+    );
+    m.insert("memory".into(), memory());
+    m.insert(
+        "os".into(),
+        std::fs::read_to_string("/proc/sys/kernel/osrelease")
+            .map_or("?".into(), |s| format!("Linux {}", s.trim())),
+    );
+    m.insert("rustc".into(), command_line("rustc", &["--version"], repo));
+    m.insert(
+        "loci commit".into(),
+        command_line("git", &["rev-parse", "--short", "HEAD"], repo),
+    );
+    m.insert("reps".into(), settings.reps.to_string());
+    m.insert("budget_s".into(), settings.budget_s.to_string());
+    m.insert("limit_s".into(), settings.limit.as_secs_f64().to_string());
+    m.insert(
+        "wall_s".into(),
+        format!("{:.0}", started.elapsed().as_secs_f64()),
+    );
+    std::fs::write(out.join("benchmarks.md"), report::markdown(&results, &command))?;
+    std::fs::write(out.join("benchmarks.svg"), report::svg(&results))?;
+    std::fs::write(
+        out.join("benchmarks.json"),
+        serde_json::to_string_pretty(&results)?,
+    )?;
+    eprintln!(
+        "wrote {} (benchmarks.md, .svg, .json) in {:.0} s",
+        out.display(),
+        started.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
+/// `worker SOLVER PROBLEM.json REPS BUDGET_S OUT.json`: one in-process solver on one problem.
+fn worker(args: &[String]) -> Result<()> {
+    let [solver, problem, reps, budget, out] = args else {
+        bail!("usage: loci-bench worker SOLVER PROBLEM.json REPS BUDGET_S OUT.json");
+    };
+    let solver = Solver::from_name(solver).with_context(|| format!("no solver {solver}"))?;
+    let text = std::fs::read_to_string(problem).with_context(|| format!("reading {problem}"))?;
+    let p: Problem = serde_json::from_str(&text).with_context(|| format!("parsing {problem}"))?;
+    let o = run_in_process(solver, &p, reps.parse()?, budget.parse()?)?;
+    std::fs::write(out, serde_json::to_string(&o)?)?;
+    Ok(())
+}
+
+fn command_line(program: &str, args: &[&str], dir: &Path) -> String {
+    std::process::Command::new(program)
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .ok()
+        .filter(|o| o.status.success())
+        .map_or("?".into(), |o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+}
+
+fn cpu_model() -> String {
+    std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|m| m.trim().to_string())
+        })
+        .unwrap_or_else(|| "?".into())
+}
+
+fn memory() -> String {
+    std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|s| {
+            let kb: f64 = s
+                .lines()
+                .find(|l| l.starts_with("MemTotal"))?
+                .split_whitespace()
+                .nth(1)?
+                .parse()
+                .ok()?;
+            Some(format!("{:.0} GiB", kb / 1024.0 / 1024.0))
+        })
+        .unwrap_or_else(|| "?".into())
+}
+
+/// Today's date in UTC as YYYY-MM-DD, from the system clock (civil-from-days).
+fn today_utc() -> String {
+    let secs = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let z = (secs / 86_400) as i64 + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let d = doy - (153 * mp + 2) / 5 + 1;
+    let m = if mp < 10 { mp + 3 } else { mp - 9 };
+    let y = yoe + era * 400 + i64::from(m <= 2);
+    format!("{y:04}-{m:02}-{d:02}")
+}
