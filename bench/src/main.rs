@@ -4,13 +4,16 @@
 //! loci-bench [--quick] [--out DIR] [--limit SECONDS] [--solvers loci,ezpz,...]
 //!            [--families chain,grid,...] [--max-size N] [--sizes N,N,...]
 //! loci-bench worker SOLVER PROBLEM.json REPS BUDGET_S OUT.json
+//! loci-bench emit FAMILY VARIANT SIZE DIR
+//! loci-bench report DIR
 //! ```
 
 use anyhow::{bail, Context, Result};
 use loci_bench::compare::{compare, Settings};
-use loci_bench::problem::{Family, Problem};
+use loci_bench::generate::generate;
+use loci_bench::problem::{Family, Problem, Variant};
 use loci_bench::report;
-use loci_bench::run::{run_in_process, Solver};
+use loci_bench::run::{run_in_process, ProblemFiles, Solver};
 use loci_bench::setup::setup;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -28,8 +31,11 @@ fn main() {
 
 fn real_main() -> Result<()> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if args.first().map(String::as_str) == Some("worker") {
-        return worker(&args[1..]);
+    match args.first().map(String::as_str) {
+        Some("worker") => return worker(&args[1..]),
+        Some("emit") => return emit(&args[1..]),
+        Some("report") => return rerender(&args[1..]),
+        _ => {}
     }
     let mut quick = false;
     let mut out: Option<PathBuf> = None;
@@ -120,10 +126,10 @@ fn real_main() -> Result<()> {
     let started = std::time::Instant::now();
     let mut results = compare(&settings, &runners, &avail, &work, |line| eprintln!("{line}"));
     let _ = std::fs::remove_dir_all(&work);
-    let command = if quick {
-        "cargo run --release -p loci-bench -- --quick".to_string()
-    } else {
+    let command = if args.is_empty() {
         "cargo run --release -p loci-bench".to_string()
+    } else {
+        format!("cargo run --release -p loci-bench -- {}", args.join(" "))
     };
     let m = &mut results.meta;
     m.insert("date".into(), today_utc());
@@ -143,6 +149,7 @@ fn real_main() -> Result<()> {
         "loci commit".into(),
         command_line("git", &["rev-parse", "--short", "HEAD"], repo),
     );
+    m.insert("command".into(), command.clone());
     m.insert("reps".into(), settings.reps.to_string());
     m.insert("budget_s".into(), settings.budget_s.to_string());
     m.insert("limit_s".into(), settings.limit.as_secs_f64().to_string());
@@ -174,6 +181,51 @@ fn worker(args: &[String]) -> Result<()> {
     let p: Problem = serde_json::from_str(&text).with_context(|| format!("parsing {problem}"))?;
     let o = run_in_process(solver, &p, reps.parse()?, budget.parse()?)?;
     std::fs::write(out, serde_json::to_string(&o)?)?;
+    Ok(())
+}
+
+/// `report DIR`: writes `benchmarks.md` and `.svg` again from `DIR/benchmarks.json`, to
+/// change the report's layout without measuring again.
+fn rerender(args: &[String]) -> Result<()> {
+    let [dir] = args else {
+        bail!("usage: loci-bench report DIR");
+    };
+    let dir = Path::new(dir);
+    let json = dir.join("benchmarks.json");
+    let text = std::fs::read_to_string(&json).with_context(|| format!("reading {}", json.display()))?;
+    let results: loci_bench::compare::Results = serde_json::from_str(&text)?;
+    let command = results
+        .meta
+        .get("command")
+        .cloned()
+        .unwrap_or_else(|| "cargo run --release -p loci-bench".into());
+    std::fs::write(dir.join("benchmarks.md"), report::markdown(&results, &command))?;
+    std::fs::write(dir.join("benchmarks.svg"), report::svg(&results))?;
+    Ok(())
+}
+
+/// `emit FAMILY VARIANT SIZE DIR`: writes one problem in every input format, to rerun a
+/// single cell by hand with a runner.
+fn emit(args: &[String]) -> Result<()> {
+    let [family, variant, size, dir] = args else {
+        bail!("usage: loci-bench emit FAMILY VARIANT SIZE DIR");
+    };
+    let family = Family::ALL
+        .into_iter()
+        .find(|f| f.name() == family)
+        .with_context(|| format!("no family {family}"))?;
+    let variant = Variant::ALL
+        .into_iter()
+        .find(|v| v.name() == variant)
+        .with_context(|| format!("no variant {variant}"))?;
+    let p = generate(family, variant, size.parse().context("SIZE takes a number")?);
+    std::fs::create_dir_all(dir)?;
+    let files = ProblemFiles::new(&p, Path::new(dir));
+    eprintln!("{}", files.neutral()?.display());
+    eprintln!("{}", files.records()?.display());
+    if p.planar {
+        eprintln!("{}", files.planegcs()?.display());
+    }
     Ok(())
 }
 

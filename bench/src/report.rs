@@ -35,8 +35,26 @@ pub fn verdict_text(v: &Verdict) -> String {
             "out of memory".into()
         }
         Verdict::Crashed { detail } => format!("crashed ({detail})"),
-        Verdict::NotRun { reason } => reason.clone(),
+        Verdict::NotRun { reason } => short_reason(reason),
     }
+}
+
+/// A table-sized form of why a cell was not run (the JSON keeps the full reason).
+fn short_reason(reason: &str) -> String {
+    if let Some(why) = reason
+        .strip_prefix("not run: ")
+        .and_then(|r| r.strip_suffix(" at a smaller size"))
+    {
+        let word = ["refuses", "timeout", "out of memory", "crashed", "failed"]
+            .into_iter()
+            .find(|w| why.starts_with(w))
+            .unwrap_or(why);
+        return format!("— ({word} at a smaller size)");
+    }
+    if reason.contains("extrapolates past") {
+        return "— (extrapolates past the limit)".into();
+    }
+    reason.to_string()
 }
 
 /// A table cell: the median time (with the ratio to loci's when given) or what happened.
@@ -130,6 +148,52 @@ fn table(out: &mut String, r: &Results, f: Family, v: Variant, build: bool) {
     out.push('\n');
 }
 
+/// The rows users ask about first: interactive sizes and sizes where solvers give up.
+const HEADLINE: [(Family, usize); 5] = [
+    (Family::Chain, 100),
+    (Family::Chain, 1_000),
+    (Family::Chain, 10_000),
+    (Family::Triangles, 10_000),
+    (Family::Grid, 2_500),
+];
+
+fn headline(out: &mut String, r: &Results) {
+    let rows: Vec<(Family, usize)> = HEADLINE
+        .into_iter()
+        .filter(|&(f, s)| r.cells.iter().any(|c| c.family == f && c.size == s))
+        .collect();
+    if rows.is_empty() {
+        return;
+    }
+    let solvers = solvers_of(r);
+    let _ = writeln!(out, "## Headline\n");
+    let _ = write!(out, "| family | size |");
+    for s in &solvers {
+        let _ = write!(out, " {} |", s.heading());
+    }
+    let _ = write!(out, "\n| --- | ---: |");
+    for _ in &solvers {
+        let _ = write!(out, " --- |");
+    }
+    out.push('\n');
+    for (f, size) in rows {
+        let v = Variant::Solvable;
+        let loci = r
+            .cell(f, v, size, Solver::Loci)
+            .filter(|c| c.verdict.has_time())
+            .and_then(|c| c.solve_ms);
+        let _ = write!(out, "| {} | {} |", f.name(), size_label(f, size));
+        for &s in &solvers {
+            let text = r
+                .cell(f, v, size, s)
+                .map_or("—".to_string(), |c| cell_text(c, loci));
+            let _ = write!(out, " {text} |");
+        }
+        out.push('\n');
+    }
+    out.push('\n');
+}
+
 /// The markdown report.
 #[must_use]
 pub fn markdown(r: &Results, command: &str) -> String {
@@ -176,6 +240,7 @@ pub fn markdown(r: &Results, command: &str) -> String {
         meta("budget_s"),
         meta("limit_s")
     );
+    headline(&mut o, r);
     let _ = writeln!(o, "## Solve times\n");
     for f in Family::ALL {
         if sizes_of(r, f, Variant::Solvable).is_empty() {
@@ -241,6 +306,16 @@ pub fn markdown(r: &Results, command: &str) -> String {
     o
 }
 
+/// A decade of milliseconds as an axis label: 0.01 ms ... 100 s.
+fn axis_label(decade: f64) -> String {
+    let ms = 10f64.powf(decade);
+    if ms >= 1000.0 {
+        format!("{} s", ms / 1000.0)
+    } else {
+        format!("{ms} ms")
+    }
+}
+
 fn color(s: Solver) -> &'static str {
     match s {
         Solver::Loci => "#d62728",
@@ -252,7 +327,7 @@ fn color(s: Solver) -> &'static str {
 }
 
 /// The plot: one log-log panel of solve time against size per family (solvable problems),
-/// one line per solver; a cross on a panel's top edge marks where a solver stopped
+/// one line per solver; a cross near a panel's top marks where a solver stopped
 /// (refused, timed out, crashed, failed or answered wrong).
 #[must_use]
 pub fn svg(r: &Results) -> String {
@@ -321,7 +396,7 @@ pub fn svg(r: &Results) -> String {
                 r##"<line x1="{x0}" y1="{y}" x2="{x1}" y2="{y}" stroke="#ddd"/><text x="{}" y="{}" text-anchor="end">{}</text>"##,
                 x0 - 4.0,
                 y + 4.0,
-                fmt_ms(10f64.powf(e))
+                axis_label(e)
             );
             e += 1.0;
         }
@@ -331,7 +406,7 @@ pub fn svg(r: &Results) -> String {
             (x0 + x1) / 2.0,
             y0 + 30.0
         );
-        for &s in &solvers {
+        for (k, &s) in solvers.iter().enumerate() {
             let cells: Vec<&Cell> = sizes
                 .iter()
                 .filter_map(|&z| r.cell(f, Variant::Solvable, z, s))
@@ -356,7 +431,8 @@ pub fn svg(r: &Results) -> String {
             }
             for c in &cells {
                 if !c.verdict.has_time() && !matches!(c.verdict, Verdict::NotRun { .. }) {
-                    let (x, y) = (px(c.size as f64), y1 + 6.0);
+                    // Stacked per solver so crosses at the same size stay visible.
+                    let (x, y) = (px(c.size as f64), y1 + 6.0 + 9.0 * k as f64);
                     let _ = writeln!(
                         o,
                         r#"<path d="M{} {} L{} {} M{} {} L{} {}" stroke="{}" stroke-width="2"/>"#,
@@ -396,7 +472,7 @@ pub fn svg(r: &Results) -> String {
     let y = oy + 22.0 + 20.0 * solvers.len() as f64 + 6.0;
     let _ = writeln!(
         o,
-        r#"<text x="{ox}" y="{y}">× on a panel's top edge: refused, timed out,</text><text x="{ox}" y="{}">crashed, failed or wrong at that size</text>"#,
+        r#"<text x="{ox}" y="{y}">× near a panel's top: refused, timed out,</text><text x="{ox}" y="{}">crashed, failed or wrong at that size</text>"#,
         y + 14.0
     );
     o.push_str("</svg>\n");

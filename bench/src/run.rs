@@ -342,7 +342,7 @@ pub fn describe_death(status: Option<ExitStatus>, stderr: &str) -> String {
     let tail = last.into_iter().rev().collect::<Vec<_>>().join(" | ");
     let lower = stderr.to_lowercase();
     let oom = lower.contains("out of memory")
-        || lower.contains("oom")
+        || lower.contains("aborted(oom)")
         || lower.contains("memory access out of bounds")
         || lower.contains("cannot enlarge memory")
         || lower.contains("array buffer allocation failed")
