@@ -33,6 +33,9 @@ pub(crate) struct Gram {
     symbolic: SymbolicCholesky<usize>,
     l_values: Vec<f64>,
     signs: Vec<i8>,
+    shifted: Vec<f64>,
+    /// Position of each diagonal entry in `vals`: the last of its column (rows are sorted).
+    diag: Vec<usize>,
     mem: MemBuffer,
 }
 
@@ -84,6 +87,7 @@ impl Gram {
             col_ptr[c + 1] = row_idx.len();
         }
         let nnz = row_idx.len();
+        let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();
         let pattern = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);
         let symbolic = factorize_symbolic_cholesky(
             pattern.as_ref(),
@@ -109,17 +113,38 @@ impl Gram {
             symbolic,
             l_values,
             signs: vec![1; nrows],
+            shifted: vec![0.0; nrows],
+            diag,
             mem,
         })
     }
 
-    /// Factorises `G` for the Jacobian values `jv`; pivots at or below `eps` are dropped.
-    /// Returns false when the factorisation failed numerically.
-    pub fn factor(&mut self, jv: &[f64], eps: f64) -> bool {
+    /// Computes `G` from the Jacobian values `jv`.
+    pub fn assemble(&mut self, jv: &[f64]) {
         self.vals.iter_mut().for_each(|v| *v = 0.0);
         for &(e, a, b) in &self.contrib {
             self.vals[e as usize] += jv[a as usize] * jv[b as usize];
         }
+    }
+
+    /// Factorises `G + lambda I` (with `G` from the last [`Gram::assemble`]); pivots at or
+    /// below `eps` are dropped. Returns false when the factorisation failed numerically.
+    pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
+        if lambda == 0.0 {
+            return self.factor_current(eps);
+        }
+        for (c, &d) in self.diag.iter().enumerate() {
+            self.shifted[c] = self.vals[d];
+            self.vals[d] += lambda;
+        }
+        let ok = self.factor_current(eps);
+        for (c, &d) in self.diag.iter().enumerate() {
+            self.vals[d] = self.shifted[c];
+        }
+        ok
+    }
+
+    fn factor_current(&mut self, eps: f64) -> bool {
         let a = SparseColMatRef::new(self.pattern.as_ref(), &self.vals);
         let reg = LdltRegularization {
             dynamic_regularization_signs: Some(&self.signs),

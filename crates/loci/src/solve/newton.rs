@@ -180,6 +180,7 @@ impl Component {
         if self.gram.is_none() {
             self.gram = Gram::new(m, &self.columns);
         }
+        let mut gram_slot = self.gram.take();
         let mut r = vec![0.0; m];
         let mut jv = vec![0.0; self.nnz];
         let mut jn = vec![0.0; self.nnz];
@@ -192,6 +193,11 @@ impl Component {
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
+        let merit = |r: &[f64], inv: &[f64]| r.iter().zip(inv).map(|(a, b)| (a * b) * (a * b)).sum::<f64>();
+        // Step length of the last accepted step: the next line search starts at twice it, so a
+        // problem that needs short steps (a long chain turning far) does not pay for failed
+        // full steps every iteration.
+        let mut alpha_prev = 1.0f64;
         loop {
             self.jacobian(kernels, x, values, &mut r, &mut jv, &mut xs, &mut jl);
             // Normalise rows of J S so the pivots of G measure independence, not units.
@@ -212,10 +218,9 @@ impl Component {
                     jn[idx as usize] *= inv[row as usize];
                 }
             }
-            let Some(gram) = self.gram.as_mut() else {
-                break;
-            };
-            factored = gram.factor(&jn, cfg.rank_tolerance);
+            let Some(gram) = gram_slot.as_mut() else { break };
+            gram.assemble(&jn);
+            factored = gram.factor(0.0, cfg.rank_tolerance);
             let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
             if max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite()) {
                 converged = true;
@@ -229,7 +234,6 @@ impl Component {
                 y[i] = -r[i] * inv[i];
             }
             gram.solve(&mut y);
-            dx.iter_mut().for_each(|v| *v = 0.0);
             for (c, col) in self.columns.iter().enumerate() {
                 let mut acc = 0.0;
                 for &(row, idx) in col {
@@ -238,21 +242,15 @@ impl Component {
                 dx[c] = acc * self.scale[c];
             }
             // Backtracking on the normalised residual, the quantity the step minimises.
-            let merit = |r: &[f64]| {
-                r.iter()
-                    .zip(&inv)
-                    .map(|(a, b)| (a * b) * (a * b))
-                    .sum::<f64>()
-            };
-            let m0 = merit(&r);
-            let mut alpha = 1.0;
+            let m0 = merit(&r, &inv);
+            let mut alpha = (2.0 * alpha_prev).min(1.0);
             let mut accepted = false;
-            for _ in 0..20 {
+            for _ in 0..30 {
                 for c in 0..ncols {
                     xt[c] = x[c] + alpha * dx[c];
                 }
                 self.residuals(kernels, &xt, values, &mut rt, &mut xs);
-                let mt = merit(&rt);
+                let mt = merit(&rt, &inv);
                 if mt.is_finite() && (mt < m0 || mt == 0.0) {
                     accepted = true;
                     break;
@@ -262,6 +260,7 @@ impl Component {
             if !accepted {
                 break;
             }
+            alpha_prev = alpha;
             x.copy_from_slice(&xt);
         }
         let mut fin = Finish {
@@ -269,10 +268,10 @@ impl Component {
             iterations,
             dropped: Vec::new(),
             dependencies: Vec::new(),
-            unsatisfied: Vec::new(),
+            unsatisfied: (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect(),
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
         };
-        fin.unsatisfied = (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect();
+        self.gram = gram_slot;
         if let (Some(gram), true) = (self.gram.as_mut(), factored) {
             fin.dropped = gram.dropped();
             if cfg.find_failed {
