@@ -43,48 +43,64 @@ impl Gram {
     /// Builds the structure from the nonzeros of `J`, given column by column as lists of
     /// `(row, index into J's values)`.
     pub fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Option<Self> {
-        // Upper-triangle pattern: for every column, every pair of rows in it.
-        let mut pairs: Vec<(u32, u32, u32, u32)> = Vec::new(); // (col of G, row of G, a, b)
+        // Rows of J with their columns: row i -> [(column, index into J's values)].
+        let mut row_ptr = vec![0usize; nrows + 1];
         for col in columns {
-            for (i, &(ri, ai)) in col.iter().enumerate() {
-                for &(rj, aj) in &col[i..] {
-                    let (lo, hi, a, b) = if ri <= rj {
-                        (ri, rj, ai, aj)
-                    } else {
-                        (rj, ri, aj, ai)
-                    };
-                    pairs.push((hi, lo, a, b));
-                }
+            for &(r, _) in col {
+                row_ptr[r as usize + 1] += 1;
             }
         }
-        // Every row has a diagonal even if its Jacobian row is empty.
-        let mut diag_seen = vec![false; nrows];
-        for p in &pairs {
-            if p.0 == p.1 {
-                diag_seen[p.0 as usize] = true;
+        for i in 0..nrows {
+            row_ptr[i + 1] += row_ptr[i];
+        }
+        let mut fill = row_ptr.clone();
+        let mut row_entries = vec![(0u32, 0u32); row_ptr[nrows]];
+        for (c, col) in columns.iter().enumerate() {
+            for &(r, a) in col {
+                row_entries[fill[r as usize]] = (c as u32, a);
+                fill[r as usize] += 1;
             }
         }
-        pairs.sort_unstable();
+        // Column i of the upper triangle of G holds the rows j <= i that share a column of J
+        // with row i; the diagonal (j = i) comes last. A marker array avoids sorting G.
         let mut col_ptr = vec![0usize; nrows + 1];
-        let mut row_idx = Vec::new();
-        let mut contrib = Vec::with_capacity(pairs.len());
-        let mut k = 0;
-        for c in 0..nrows {
-            let start = row_idx.len();
-            while k < pairs.len() && pairs[k].0 as usize == c {
-                let r = pairs[k].1 as usize;
-                if row_idx.len() == start || *row_idx.last().unwrap_or(&usize::MAX) != r {
-                    row_idx.push(r);
+        let mut row_idx: Vec<usize> = Vec::new();
+        let mut contrib = Vec::new();
+        let mut slot_of = vec![usize::MAX; nrows];
+        let mut touched: Vec<usize> = Vec::new();
+        let mut pending: Vec<(u32, u32, u32)> = Vec::new(); // (row j, a, b)
+        for i in 0..nrows {
+            touched.clear();
+            pending.clear();
+            for &(c, b) in &row_entries[row_ptr[i]..row_ptr[i + 1]] {
+                for &(j, a) in &columns[c as usize] {
+                    if j as usize <= i {
+                        if slot_of[j as usize] == usize::MAX {
+                            slot_of[j as usize] = 0;
+                            touched.push(j as usize);
+                        }
+                        pending.push((j, a, b));
+                    }
                 }
-                contrib.push(((row_idx.len() - 1) as u32, pairs[k].2, pairs[k].3));
-                k += 1;
             }
-            if !diag_seen[c] {
-                // An empty Jacobian row: a lone diagonal entry (the largest row index in its
-                // column), which will be a zero pivot and so a dropped equation.
-                row_idx.push(c);
+            // An empty Jacobian row still gets its diagonal: a zero pivot, a dropped equation.
+            if slot_of[i] == usize::MAX {
+                slot_of[i] = 0;
+                touched.push(i);
             }
-            col_ptr[c + 1] = row_idx.len();
+            touched.sort_unstable();
+            let start = row_idx.len();
+            for (k, &j) in touched.iter().enumerate() {
+                slot_of[j] = start + k;
+                row_idx.push(j);
+            }
+            for &(j, a, b) in &pending {
+                contrib.push((slot_of[j as usize] as u32, a, b));
+            }
+            for &j in &touched {
+                slot_of[j] = usize::MAX;
+            }
+            col_ptr[i + 1] = row_idx.len();
         }
         let nnz = row_idx.len();
         let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();

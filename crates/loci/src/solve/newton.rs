@@ -17,6 +17,9 @@ pub(crate) struct Block {
     pub cols: Vec<u32>,
     /// For each local slot: its position in `cols`, or -1 for a constant.
     pub slot_col: Vec<i32>,
+    /// The slots that are unknowns, and the position in `cols` of each.
+    pub active: Vec<u16>,
+    pub active_col: Vec<u32>,
 }
 
 /// How one component ended.
@@ -84,13 +87,9 @@ impl Component {
                 row_block.push((bi as u32, r as u8));
             }
             let n = cols.len();
-            blocks.push(Block {
-                kernel: k,
-                row0: row,
-                jv0: jv,
-                cols,
-                slot_col,
-            });
+            let active: Vec<u16> = (0..slot_col.len() as u16).filter(|&s| slot_col[s as usize] >= 0).collect();
+            let active_col = active.iter().map(|&s| slot_col[s as usize] as u32).collect();
+            blocks.push(Block { kernel: k, row0: row, jv0: jv, cols, slot_col, active, active_col });
             row += kern.rows;
             jv += kern.rows * n;
         }
@@ -149,18 +148,25 @@ impl Component {
         for b in &self.blocks {
             let k = &kernels[b.kernel];
             self.gather(b, k, x, values, xs);
-            let n = xs.len();
+            let na = b.active.len();
             jl.clear();
-            jl.resize(k.rows * n, 0.0);
-            k.eq.jacobian(xs, &mut r[b.row0..b.row0 + k.rows], jl);
+            jl.resize(k.rows * na, 0.0);
+            k.eq.jacobian_active(xs, &b.active, &mut r[b.row0..b.row0 + k.rows], jl);
             let w = b.cols.len();
             let block = &mut jv[b.jv0..b.jv0 + k.rows * w];
-            block.iter_mut().for_each(|v| *v = 0.0);
-            for row in 0..k.rows {
-                for s in 0..n {
-                    let c = b.slot_col[s];
-                    if c >= 0 {
-                        block[row * w + c as usize] += jl[row * n + s];
+            if na == w {
+                // Every unknown appears once: the block is the Jacobian as computed.
+                for row in 0..k.rows {
+                    for (a, &c) in b.active_col.iter().enumerate() {
+                        block[row * w + c as usize] = jl[row * na + a];
+                    }
+                }
+            } else {
+                // Merged parameters: several slots feed one column.
+                block.iter_mut().for_each(|v| *v = 0.0);
+                for row in 0..k.rows {
+                    for (a, &c) in b.active_col.iter().enumerate() {
+                        block[row * w + c as usize] += jl[row * na + a];
                     }
                 }
             }
