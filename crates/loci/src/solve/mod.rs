@@ -11,6 +11,7 @@
 //!    redundant or conflicting constraints.
 
 mod config;
+mod dense;
 mod gram;
 mod newton;
 mod report;
@@ -213,14 +214,14 @@ pub fn solve(
     let mut conflicting: Vec<Owner> = Vec::new();
     let mut unsatisfied: Vec<Owner> = Vec::new();
     let mut x_all: Vec<f64> = col_root.iter().map(|&r| start[r]).collect();
+    // Column -> position within its component; set per component and reset after, so the
+    // cost stays linear in the number of components.
+    let mut local = vec![u32::MAX; ncols];
+    let mut scratch = newton::Scratch::default();
     for (members, cols) in &comps {
-        let local: Vec<u32> = {
-            let mut v = vec![u32::MAX; ncols];
-            for (i, &c) in cols.iter().enumerate() {
-                v[c] = i as u32;
-            }
-            v
-        };
+        for (i, &c) in cols.iter().enumerate() {
+            local[c] = i as u32;
+        }
         let scale: Vec<f64> = cols
             .iter()
             .map(|&c| {
@@ -233,8 +234,11 @@ pub fn solve(
             .collect();
         let map = |p: usize| col_of_param(p, &col_of_root).map(|c| local[c as usize]);
         let mut comp = Component::new(&kernels, members, &map, cols.len(), scale);
+        for &c in cols {
+            local[c] = u32::MAX;
+        }
         let mut x: Vec<f64> = cols.iter().map(|&c| x_all[c]).collect();
-        let fin = comp.solve(&kernels, &mut x, &values, cfg);
+        let fin = comp.solve(&kernels, &mut x, &values, cfg, &mut scratch);
         report.iterations = report.iterations.max(fin.iterations);
         report.residual = report.residual.max(fin.residual);
         rank_total += comp.rows - fin.dropped.len();

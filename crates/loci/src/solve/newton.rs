@@ -35,6 +35,21 @@ pub(crate) struct Finish {
     pub residual: f64,
 }
 
+/// Work vectors reused across components, so that many small components cost no allocations.
+#[derive(Default)]
+pub(crate) struct Scratch {
+    r: Vec<f64>,
+    jv: Vec<f64>,
+    jn: Vec<f64>,
+    inv: Vec<f64>,
+    y: Vec<f64>,
+    dx: Vec<f64>,
+    xt: Vec<f64>,
+    rt: Vec<f64>,
+    xs: Vec<f64>,
+    jl: Vec<f64>,
+}
+
 /// A component ready to solve repeatedly.
 pub(crate) struct Component {
     pub blocks: Vec<Block>,
@@ -180,6 +195,7 @@ impl Component {
         x: &mut [f64],
         values: &[f64],
         cfg: &Config,
+        scratch: &mut Scratch,
     ) -> Finish {
         let m = self.rows;
         let ncols = x.len();
@@ -187,15 +203,17 @@ impl Component {
             self.gram = Gram::new(m, &self.columns);
         }
         let mut gram_slot = self.gram.take();
-        let mut r = vec![0.0; m];
-        let mut jv = vec![0.0; self.nnz];
-        let mut jn = vec![0.0; self.nnz];
-        let mut inv = vec![0.0; m];
-        let mut y = vec![0.0; m];
-        let mut dx = vec![0.0; ncols];
-        let mut xt = vec![0.0; ncols];
-        let mut rt = vec![0.0; m];
-        let (mut xs, mut jl) = (Vec::new(), Vec::new());
+        let Scratch { r, jv, jn, inv, y, dx, xt, rt, xs, jl } = scratch;
+        for (v, n) in [(&mut *r, m), (&mut *jv, self.nnz), (&mut *jn, self.nnz), (&mut *inv, m), (&mut *y, m)] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        for (v, n) in [(&mut *dx, ncols), (&mut *xt, ncols), (&mut *rt, m)] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        let (r, jv, jn, inv, y, dx, xt, rt) =
+            (&mut r[..], &mut jv[..], &mut jn[..], &mut inv[..], &mut y[..], &mut dx[..], &mut xt[..], &mut rt[..]);
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
@@ -205,7 +223,7 @@ impl Component {
         // full steps every iteration.
         let mut alpha_prev = 1.0f64;
         loop {
-            self.jacobian(kernels, x, values, &mut r, &mut jv, &mut xs, &mut jl);
+            self.jacobian(kernels, x, values, r, jv, xs, jl);
             // Normalise rows of J S so the pivots of G measure independence, not units.
             inv.iter_mut().for_each(|v| *v = 0.0);
             for (c, col) in self.columns.iter().enumerate() {
@@ -216,7 +234,7 @@ impl Component {
                     inv[row as usize] += v * v;
                 }
             }
-            for v in &mut inv {
+            for v in inv.iter_mut() {
                 *v = if *v > 0.0 { 1.0 / v.sqrt() } else { 0.0 };
             }
             for col in &self.columns {
@@ -239,7 +257,7 @@ impl Component {
             for i in 0..m {
                 y[i] = -r[i] * inv[i];
             }
-            gram.solve(&mut y);
+            gram.solve(y);
             for (c, col) in self.columns.iter().enumerate() {
                 let mut acc = 0.0;
                 for &(row, idx) in col {
@@ -255,7 +273,7 @@ impl Component {
                 for c in 0..ncols {
                     xt[c] = x[c] + alpha * dx[c];
                 }
-                self.residuals(kernels, &xt, values, &mut rt, &mut xs);
+                self.residuals(kernels, &xt, values, rt, xs);
                 let mt = merit(&rt, &inv);
                 if mt.is_finite() && (mt < m0 || mt == 0.0) {
                     accepted = true;
