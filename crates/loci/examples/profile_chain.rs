@@ -114,4 +114,25 @@ fn main() {
     }
     times.sort_by(|a, b| a.partial_cmp(b).unwrap());
     println!("chain {n}: median {:.2} ms (min {:.2})", times[times.len() / 2], times[0]);
+    // Re-solve after moving the fixed first point slightly, from the solved state.
+    let mut solved = base.clone();
+    let mut solver = loci::Solver::new(2, &[], Config::default());
+    let t = Instant::now();
+    solver.solve(&mut solved).unwrap();
+    println!("first solve with a Solver: {:.2} ms", t.elapsed().as_secs_f64() * 1e3);
+    let mut again = Vec::new();
+    for i in 0..reps {
+        let p = loci::ParamId(10);
+        let v = solved.value(p).unwrap();
+        solved.set_value(p, v + 0.01);
+        let t = Instant::now();
+        let r = solver.solve(&mut solved).unwrap();
+        again.push(t.elapsed().as_secs_f64() * 1e3);
+        assert!(r.outcome.is_ok(), "{r:?}");
+        if i == 0 {
+            println!("re-solve: {} iterations", r.iterations);
+        }
+    }
+    again.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    println!("re-solve after moving the fixed point by 0.01: median {:.2} ms", again[again.len() / 2]);
 }
