@@ -222,6 +222,8 @@ impl Component {
         // problem that needs short steps (a long chain turning far) does not pay for failed
         // full steps every iteration.
         let mut alpha_prev = 1.0f64;
+        // Levenberg-Marquardt damping, once plain Newton steps stop reducing the residual.
+        let mut damping: Option<f64> = None;
         loop {
             self.jacobian(kernels, x, values, r, jv, xs, jl);
             // Normalise rows of J S so the pivots of G measure independence, not units.
@@ -254,35 +256,68 @@ impl Component {
                 break;
             }
             iterations += 1;
-            for i in 0..m {
-                y[i] = -r[i] * inv[i];
-            }
-            gram.solve(y);
-            for (c, col) in self.columns.iter().enumerate() {
-                let mut acc = 0.0;
-                for &(row, idx) in col {
-                    acc += jn[idx as usize] * y[row as usize];
+            let step = |gram: &mut Gram, y: &mut [f64], dx: &mut [f64]| {
+                for i in 0..m {
+                    y[i] = -r[i] * inv[i];
                 }
-                dx[c] = acc * self.scale[c];
-            }
-            // Backtracking on the normalised residual, the quantity the step minimises.
+                gram.solve(y);
+                for (c, col) in self.columns.iter().enumerate() {
+                    let mut acc = 0.0;
+                    for &(row, idx) in col {
+                        acc += jn[idx as usize] * y[row as usize];
+                    }
+                    dx[c] = acc * self.scale[c];
+                }
+            };
+            // The normalised residual, the quantity the step minimises.
             let m0 = merit(&r, &inv);
             let mut alpha = (2.0 * alpha_prev).min(1.0);
             let mut accepted = false;
-            for _ in 0..30 {
-                for c in 0..ncols {
-                    xt[c] = x[c] + alpha * dx[c];
+            if damping.is_none() {
+                // Newton step with backtracking.
+                step(gram, y, dx);
+                for _ in 0..30 {
+                    for c in 0..ncols {
+                        xt[c] = x[c] + alpha * dx[c];
+                    }
+                    self.residuals(kernels, &xt, values, rt, xs);
+                    let mt = merit(&rt, &inv);
+                    if mt.is_finite() && (mt < m0 || mt == 0.0) {
+                        accepted = true;
+                        break;
+                    }
+                    alpha *= 0.5;
                 }
-                self.residuals(kernels, &xt, values, rt, xs);
-                let mt = merit(&rt, &inv);
-                if mt.is_finite() && (mt < m0 || mt == 0.0) {
-                    accepted = true;
-                    break;
-                }
-                alpha *= 0.5;
             }
             if !accepted {
-                break;
+                // Backtracking stalls where the Jacobian is nearly singular, typically on the
+                // way to the least-squares point of constraints that cannot all hold. Damped
+                // (Levenberg-Marquardt) steps keep descending to that point, where the rank test
+                // can name the conflict; they also rescue consistent problems from a bad start.
+                // Adaptive damping as in Nocedal & Wright, "Numerical Optimization", 10.3.
+                let mut lambda = damping.unwrap_or(1e-6);
+                while lambda < 1e12 {
+                    if gram.factor(lambda, cfg.rank_tolerance) {
+                        step(gram, y, dx);
+                        for c in 0..ncols {
+                            xt[c] = x[c] + dx[c];
+                        }
+                        self.residuals(kernels, &xt, values, rt, xs);
+                        let mt = merit(&rt, &inv);
+                        if mt.is_finite() && (mt < m0 || mt == 0.0) {
+                            accepted = true;
+                            break;
+                        }
+                    }
+                    lambda *= 10.0;
+                }
+                damping = Some((lambda / 10.0).max(1e-12));
+                alpha = 1.0;
+                if !accepted {
+                    // Leave the undamped factorisation for the rank test.
+                    factored = gram.factor(0.0, cfg.rank_tolerance);
+                    break;
+                }
             }
             alpha_prev = alpha;
             x.copy_from_slice(&xt);
