@@ -2,6 +2,7 @@
 
 use crate::abi::*;
 use loci::{Constraint, ConstraintKind, Entity, ModelError, ObjectId, Param, System};
+use std::collections::HashMap;
 use std::fmt;
 use std::os::raw::c_int;
 
@@ -135,11 +136,21 @@ pub fn entity(e: &Slvs_Entity) -> Result<Entity, InputError> {
     })
 }
 
-/// The loci constraint for a C constraint.
+/// The loci constraint for a C constraint; `entity_type` gives the `SLVS_E_*` type of an
+/// entity handle (when it exists).
+///
+/// Two signed dimensions are measured along a line whose direction libslvs takes from its
+/// second point to its first, where loci goes from first to second: the distance from a point
+/// to a line in a workplane (`SLVS_C_PT_LINE_DISTANCE`), and the distance between two points
+/// projected onto a line (`SLVS_C_PROJ_PT_DISTANCE`). Their `valA` changes sign on the way in,
+/// so a C program gets the side libslvs gives it.
 ///
 /// # Errors
 /// An unknown type.
-pub fn constraint(c: &Slvs_Constraint) -> Result<Constraint, InputError> {
+pub fn constraint(
+    c: &Slvs_Constraint,
+    entity_type: impl Fn(Slvs_hEntity) -> Option<c_int>,
+) -> Result<Constraint, InputError> {
     let kind = u32::try_from(c.r#type)
         .ok()
         .and_then(ConstraintKind::from_slvs_code)
@@ -147,9 +158,15 @@ pub fn constraint(c: &Slvs_Constraint) -> Result<Constraint, InputError> {
             constraint: c.h,
             ty: c.r#type,
         })?;
+    let reversed_line = match kind {
+        ConstraintKind::PtLineDistance => c.wrkpl != 0,
+        ConstraintKind::ProjPtDistance => entity_type(c.entityA) == Some(SLVS_E_LINE_SEGMENT),
+        _ => false,
+    };
+    let val = if reversed_line { -c.valA } else { c.valA };
     Ok(Constraint::new(c.h, c.group, kind)
         .in_workplane(opt(c.wrkpl))
-        .with_val(c.valA)
+        .with_val(val)
         .with_points(c.ptA, c.ptB)
         .with_entities([c.entityA, c.entityB, c.entityC, c.entityD])
         .with_flags(c.other != 0, c.other2 != 0))
@@ -172,8 +189,9 @@ pub fn system(
     for e in entities {
         sys.add_entity(entity(e)?)?;
     }
+    let types: HashMap<Slvs_hEntity, c_int> = entities.iter().map(|e| (e.h, e.r#type)).collect();
     for c in constraints {
-        sys.add_constraint(constraint(c)?)?;
+        sys.add_constraint(constraint(c, |h| types.get(&h).copied())?)?;
     }
     sys.validate()?;
     Ok(sys)

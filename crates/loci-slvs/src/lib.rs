@@ -33,6 +33,7 @@ pub mod convert;
 mod last_error;
 mod quaternion;
 mod solve;
+mod start;
 
 pub use last_error::Loci_Slvs_LastError;
 pub use quaternion::{Slvs_MakeQuaternion, Slvs_QuaternionN, Slvs_QuaternionU, Slvs_QuaternionV};

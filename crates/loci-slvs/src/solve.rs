@@ -3,6 +3,7 @@
 use crate::abi::*;
 use crate::convert::{self, InputError};
 use crate::last_error;
+use crate::start;
 use loci::{Config, Outcome, ParamId};
 use std::os::raw::c_int;
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -55,13 +56,24 @@ pub fn solve_arrays(
         .map(|&h| ParamId(h))
         .filter(|&h| sys.param(h).is_some())
         .collect();
-    let cfg = Config::default().with_find_failed(calculate_faileds);
+    let dragged_handles: Vec<Slvs_hParam> = dragged.iter().map(|h| h.0).collect();
+    for (i, v) in start::merged_start_values(params, entities, constraints, &dragged_handles, hg) {
+        sys.set_value(ParamId(params[i].h), v);
+    }
+    // Always look for the failing constraints: libslvs names conflicting ones even when
+    // calculateFaileds is 0, and only leaves out the redundant ones then.
+    let cfg = Config::default();
     let report = loci::solve(&mut sys, hg.into(), &dragged, &cfg).map_err(|e| match e {
         loci::SolveError::Model(m) => InputError::Model(m),
         // The model was validated and unknown dragged handles dropped above, and the default
         // options are in range, so this is not expected; keep loci's message if it happens.
         other => InputError::Solve(other.to_string()),
     })?;
+    let failed = if report.outcome == Outcome::RedundantOkay && !calculate_faileds {
+        Vec::new()
+    } else {
+        report.failed.iter().map(|c| c.0).collect()
+    };
     let values = report.outcome.is_ok().then(|| {
         sys.params()
             .iter()
@@ -73,7 +85,7 @@ pub fn solve_arrays(
     Ok(Answer {
         result: result_code(report.outcome),
         dof: c_int::try_from(report.dof).unwrap_or(c_int::MAX),
-        failed: report.failed.iter().map(|c| c.0).collect(),
+        failed,
         values,
     })
 }

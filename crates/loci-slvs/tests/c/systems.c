@@ -57,6 +57,7 @@ static void t_pt_line_distance(int d3)
     fix(a);
     fix(b);
     con(SLVS_C_PT_LINE_DISTANCE, 6, p, 0, l, 0);
+    con(SLVS_C_PT_PT_DISTANCE, 8, a, p, 0, 0);
     solve(nm("pt_line_distance", d3));
 }
 
@@ -84,6 +85,7 @@ static void t_pt_on_line(int d3)
     fix(a);
     fix(b);
     con(SLVS_C_PT_ON_LINE, 0, p, 0, l, 0);
+    con(SLVS_C_PT_PT_DISTANCE, 5, a, p, 0, 0);
     solve(nm("pt_on_line", d3));
 }
 
@@ -177,6 +179,7 @@ static void t_equal_angle(int d3, int other)
     k->entityC = l3;
     k->entityD = l4;
     k->other = other;
+    con(SLVS_C_PT_PT_DISTANCE, 8, g, h, 0, 0);
     solve(nm(other ? "equal_angle_other" : "equal_angle", d3));
 }
 
@@ -192,7 +195,7 @@ static void t_equal_line_arc_len(void)
     fix(a);
     con(SLVS_C_EQUAL_LINE_ARC_LEN, 0, 0, 0, l, ar);
     con(SLVS_C_HORIZONTAL, 0, 0, 0, l, 0);
-    con(SLVS_C_PT_PT_DISTANCE, 10, c, e, 0, 0);
+    con(SLVS_C_VERTICAL, 0, c, e, 0, 0);
     solve("equal_line_arc_len");
 }
 
@@ -347,8 +350,8 @@ static void t_arc_line_tangent(int other)
     Slvs_hEntity q = pt2(other ? 8 : 12, other ? 11 : 9);
     Slvs_hEntity l = ln(other ? e : s, q);
     fix(c);
-    fix(s);
-    fix(e);
+    fix(other ? e : s);
+    con(other ? SLVS_C_HORIZONTAL : SLVS_C_VERTICAL, 0, c, other ? s : e, 0, 0);
     con(SLVS_C_PT_PT_DISTANCE, 10, other ? e : s, q, 0, 0);
     Slvs_Constraint *k = con(SLVS_C_ARC_LINE_TANGENT, 0, 0, 0, ar, l);
     k->other = other;
@@ -367,6 +370,7 @@ static void t_cubic_line_tangent(int d3, int other)
     fix(p3);
     fix(q);
     if (other) fix(p1); else fix(p2);
+    con(SLVS_C_PT_PT_DISTANCE, 5, other ? p3 : p0, other ? p2 : p1, 0, 0);
     Slvs_Constraint *k = con(SLVS_C_CUBIC_LINE_TANGENT, 0, 0, 0, cu, l);
     k->other = other;
     solve(nm(other ? "cubic_line_tangent_end" : "cubic_line_tangent", d3));
@@ -401,6 +405,7 @@ static void t_proj_pt_distance(int d3)
     fix(b);
     fix(p);
     con(SLVS_C_PROJ_PT_DISTANCE, 9, p, q, l, 0);
+    con(SLVS_C_PT_PT_DISTANCE, 12, p, q, 0, 0);
     solve(nm("proj_pt_distance", d3));
 }
 
@@ -422,14 +427,13 @@ static void t_curve_curve_tangent(int kinds, int other, int other2)
     if (kinds < 2) {
         Slvs_hEntity c = pt2(0, 0), s = pt2(10, 0), e = pt2(0, 10);
         fix(c);
-        fix(s);
-        fix(e);
+        fix(other ? e : s);
+        con(other ? SLVS_C_HORIZONTAL : SLVS_C_VERTICAL, 0, c, other ? s : e, 0, 0);
         e1 = arc(c, s, e);
         Slvs_hEntity joint = other ? e : s;
         if (kinds == 0) {
             Slvs_hEntity c2 = pt2(other ? 1 : 19, other ? 19 : 1), s2 = pt2(other ? 1 : 19, other ? 29 : 10);
             Slvs_hEntity ar2 = other2 ? arc(c2, s2, joint) : arc(c2, joint, s2);
-            con(SLVS_C_PT_PT_DISTANCE, 9, c2, s2, 0, 0);
             fix(s2);
             e2 = ar2;
         } else {
@@ -468,7 +472,7 @@ static void t_arc_lengths(int type)
     Slvs_hEntity a1 = arc(c, s, e);
     fix(c);
     fix(s);
-    fix(e);
+    con(SLVS_C_VERTICAL, 0, c, e, 0, 0);
     Slvs_hEntity c2 = pt2(30, 0), s2 = pt2(36, 0), e2 = pt2(30, 7);
     fix(c2);
     fix(s2);
@@ -477,8 +481,6 @@ static void t_arc_lengths(int type)
     const char *name;
     if (type == SLVS_C_ARC_ARC_LEN_RATIO || type == SLVS_C_ARC_ARC_DIFFERENCE) {
         other = arc(c2, s2, e2);
-        con(SLVS_C_PT_ON_LINE, 0, e2, 0, 0, 0)->entityA = 0; /* placeholder removed below */
-        S_.constraints--;
         val = type == SLVS_C_ARC_ARC_LEN_RATIO ? 1.5 : 4;
         name = type == SLVS_C_ARC_ARC_LEN_RATIO ? "arc_arc_len_ratio" : "arc_arc_difference";
     } else {
@@ -682,7 +684,7 @@ static void t_tilted_workplane(void)
     /* A 3D point 4 above the plane's corner c. */
     W = 0;
     Slvs_hEntity up = pt3(5, 5, 5);
-    con(SLVS_C_PT_PLANE_DISTANCE, 4, up, 0, wp, 0);
+    con(SLVS_C_PT_PLANE_DISTANCE, 3, up, 0, wp, 0);
     con(SLVS_C_PT_PT_DISTANCE, 4, up, cc, 0, 0);
     solve("tilted_workplane_rectangle");
 }
@@ -701,6 +703,70 @@ static void t_3d_normal_in_group(void)
     Slvs_hEntity p = pt2(3, 4);
     fix(p);
     solve("free_normal_workplane");
+}
+
+static void t_arc_all_points_fixed(void)
+{
+    /* Centre, start and end all fixed: the arc's own equal-radius condition is redundant. */
+    start(0);
+    Slvs_hEntity c = pt2(0, 0), s = pt2(10, 0), e = pt2(0, 10);
+    arc(c, s, e);
+    fix(c);
+    fix(s);
+    fix(e);
+    solve("arc_all_points_fixed");
+}
+
+static void t_three_conflicting(void)
+{
+    start(0);
+    Slvs_hEntity a = pt2(0, 0), b = pt2(10, 1);
+    fix(a);
+    con(SLVS_C_PT_PT_DISTANCE, 30, a, b, 0, 0);
+    con(SLVS_C_PT_PT_DISTANCE, 40, a, b, 0, 0);
+    con(SLVS_C_PT_PT_DISTANCE, 50, a, b, 0, 0);
+    solve("three_conflicting_distances");
+}
+
+static void t_proj_on_normal(void)
+{
+    start(1);
+    Slvs_hEntity p = pt3(1, 1, 1), q = pt3(7, 4, 2);
+    fix(p);
+    con(SLVS_C_PROJ_PT_DISTANCE, 9, p, q, 102, 0);
+    con(SLVS_C_PT_PT_DISTANCE, 12, p, q, 0, 0);
+    solve("proj_pt_distance_normal");
+}
+
+static void t_chain(int n)
+{
+    /* A chain of n segments in the plane: joints coincident, lengths and neighbour angles
+     * fixed, the first point fixed, everything else started a little off. */
+    start(0);
+    Slvs_hEntity prev_end = 0, prev_line = 0, first = 0;
+    double x = 0, y = 0;
+    for (int i = 0; i < n; i++) {
+        double ang = 0.3 * sin(i);
+        Slvs_hEntity a = pt2(x + 0.1 * (i % 3), y - 0.1 * (i % 2));
+        x += 10 * cos(ang);
+        y += 10 * sin(ang);
+        Slvs_hEntity b = pt2(x + 0.2, y - 0.1);
+        Slvs_hEntity l = ln(a, b);
+        if (i == 0) {
+            first = a;
+            con(SLVS_C_HORIZONTAL, 0, 0, 0, l, 0);
+        } else {
+            con(SLVS_C_POINTS_COINCIDENT, 0, prev_end, a, 0, 0);
+            con(SLVS_C_ANGLE, 20, 0, 0, prev_line, l);
+        }
+        con(SLVS_C_PT_PT_DISTANCE, 10, a, b, 0, 0);
+        prev_end = b;
+        prev_line = l;
+    }
+    fix(first);
+    static char nme[32];
+    snprintf(nme, sizeof nme, "chain_%d", n);
+    solve(nme);
 }
 
 static void t_quaternions(void)
@@ -801,6 +867,10 @@ int main(void)
     t_groups();
     t_tilted_workplane();
     t_3d_normal_in_group();
+    t_arc_all_points_fixed();
+    t_three_conflicting();
+    t_proj_on_normal();
+    t_chain(12);
     t_quaternions();
     return 0;
 }
