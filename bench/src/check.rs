@@ -40,7 +40,11 @@ pub fn max_residual(p: &Problem, pts: &[[f64; 3]]) -> f64 {
     let mut worst: f64 = 0.0;
     let mut see = |r: f64| {
         // NaN must count as the worst possible, never be skipped by max.
-        worst = if r.is_nan() { f64::INFINITY } else { worst.max(r.abs()) };
+        worst = if r.is_nan() {
+            f64::INFINITY
+        } else {
+            worst.max(r.abs())
+        };
     };
     for (pt, got) in p.points.iter().zip(pts) {
         if pt.fixed {

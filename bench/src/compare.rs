@@ -58,14 +58,14 @@ impl Settings {
             s
         } else {
             match (self.quick, variant, grid) {
-            (true, Variant::Solvable, false) => &[10, 100],
-            (true, Variant::Solvable, true) => &[3, 10],
-            (true, _, false) => &[10],
-            (true, _, true) => &[3],
-            (false, Variant::Solvable, false) => &[10, 100, 1_000, 10_000, 100_000],
-            (false, Variant::Solvable, true) => &[3, 10, 32, 50, 100, 316],
-            (false, _, false) => &[10, 100, 1_000, 10_000],
-            (false, _, true) => &[3, 10, 32, 100],
+                (true, Variant::Solvable, false) => &[10, 100],
+                (true, Variant::Solvable, true) => &[3, 10],
+                (true, _, false) => &[10],
+                (true, _, true) => &[3],
+                (false, Variant::Solvable, false) => &[10, 100, 1_000, 10_000, 100_000],
+                (false, Variant::Solvable, true) => &[3, 10, 32, 50, 100, 316],
+                (false, _, false) => &[10, 100, 1_000, 10_000],
+                (false, _, true) => &[3, 10, 32, 100],
             }
         };
         all.iter()
@@ -162,9 +162,10 @@ pub fn compare(
                         Some("not available".to_string())
                     } else if let Some(why) = &st.stopped {
                         Some(format!("not run: {why} at a smaller size"))
-                    } else if let Some((s0, ms)) = st.last.filter(|(s0, ms)| {
-                        ms * size as f64 / *s0 as f64 > limit_ms
-                    }) {
+                    } else if let Some((s0, ms)) = st
+                        .last
+                        .filter(|(s0, ms)| ms * size as f64 / *s0 as f64 > limit_ms)
+                    {
                         Some(format!(
                             "not run: {ms:.0} ms at size {s0} extrapolates past the {:.0} s limit",
                             settings.limit.as_secs_f64()

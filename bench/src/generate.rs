@@ -207,7 +207,11 @@ fn chain(b: &mut Builder, n: usize) -> Extra {
     for i in 0..n {
         let len = b.rng.range(5.0, 15.0);
         let p = b.point(at, i == 0);
-        at = [at[0] + len * heading.cos(), at[1] + len * heading.sin(), 0.0];
+        at = [
+            at[0] + len * heading.cos(),
+            at[1] + len * heading.sin(),
+            0.0,
+        ];
         let q = b.point(at, false);
         let l = b.line(p, q);
         b.cons.push(Con::Distance { a: p, b: q, d: len });
@@ -330,7 +334,11 @@ fn fillets(b: &mut Builder, n: usize) -> Extra {
         let near_p = b.point(end, false);
         let far_p = b.point(far, false);
         // Arcs run counter-clockwise: a left turn starts where the line ends.
-        let (s, t) = if left { (near_p, far_p) } else { (far_p, near_p) };
+        let (s, t) = if left {
+            (near_p, far_p)
+        } else {
+            (far_p, near_p)
+        };
         b.arcs.push(Arc {
             center: cp,
             start: s,
@@ -399,7 +407,10 @@ fn chain_3d(b: &mut Builder, n: usize) -> Extra {
         }
     }
     // With the first point fixed, two lengths and the angle between them fix the span.
-    let has_angle = b.cons.iter().any(|c| matches!(c, Con::Angle { l1: 0, l2: 1, .. }));
+    let has_angle = b
+        .cons
+        .iter()
+        .any(|c| matches!(c, Con::Angle { l1: 0, l2: 1, .. }));
     Extra {
         con: if has_angle {
             b.distance(0, 2)

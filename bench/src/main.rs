@@ -46,7 +46,10 @@ fn real_main() -> Result<()> {
     let mut sizes: Option<Vec<usize>> = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
-        let mut value = || it.next().with_context(|| format!("{a} needs a value\n{USAGE}"));
+        let mut value = || {
+            it.next()
+                .with_context(|| format!("{a} needs a value\n{USAGE}"))
+        };
         match a.as_str() {
             "--quick" => quick = true,
             "--out" => out = Some(PathBuf::from(value()?)),
@@ -124,7 +127,9 @@ fn real_main() -> Result<()> {
         }
     }
     let started = std::time::Instant::now();
-    let mut results = compare(&settings, &runners, &avail, &work, |line| eprintln!("{line}"));
+    let mut results = compare(&settings, &runners, &avail, &work, |line| {
+        eprintln!("{line}")
+    });
     let _ = std::fs::remove_dir_all(&work);
     let command = if args.is_empty() {
         "cargo run --release -p loci-bench".to_string()
@@ -157,7 +162,10 @@ fn real_main() -> Result<()> {
         "wall_s".into(),
         format!("{:.0}", started.elapsed().as_secs_f64()),
     );
-    std::fs::write(out.join("benchmarks.md"), report::markdown(&results, &command))?;
+    std::fs::write(
+        out.join("benchmarks.md"),
+        report::markdown(&results, &command),
+    )?;
     std::fs::write(out.join("benchmarks.svg"), report::svg(&results))?;
     std::fs::write(
         out.join("benchmarks.json"),
@@ -192,14 +200,18 @@ fn rerender(args: &[String]) -> Result<()> {
     };
     let dir = Path::new(dir);
     let json = dir.join("benchmarks.json");
-    let text = std::fs::read_to_string(&json).with_context(|| format!("reading {}", json.display()))?;
+    let text =
+        std::fs::read_to_string(&json).with_context(|| format!("reading {}", json.display()))?;
     let results: loci_bench::compare::Results = serde_json::from_str(&text)?;
     let command = results
         .meta
         .get("command")
         .cloned()
         .unwrap_or_else(|| "cargo run --release -p loci-bench".into());
-    std::fs::write(dir.join("benchmarks.md"), report::markdown(&results, &command))?;
+    std::fs::write(
+        dir.join("benchmarks.md"),
+        report::markdown(&results, &command),
+    )?;
     std::fs::write(dir.join("benchmarks.svg"), report::svg(&results))?;
     Ok(())
 }
@@ -218,7 +230,11 @@ fn emit(args: &[String]) -> Result<()> {
         .into_iter()
         .find(|v| v.name() == variant)
         .with_context(|| format!("no variant {variant}"))?;
-    let p = generate(family, variant, size.parse().context("SIZE takes a number")?);
+    let p = generate(
+        family,
+        variant,
+        size.parse().context("SIZE takes a number")?,
+    );
     std::fs::create_dir_all(dir)?;
     let files = ProblemFiles::new(&p, Path::new(dir));
     eprintln!("{}", files.neutral()?.display());
@@ -236,7 +252,9 @@ fn command_line(program: &str, args: &[&str], dir: &Path) -> String {
         .output()
         .ok()
         .filter(|o| o.status.success())
-        .map_or("?".into(), |o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+        .map_or("?".into(), |o| {
+            String::from_utf8_lossy(&o.stdout).trim().to_string()
+        })
 }
 
 fn cpu_model() -> String {

@@ -50,9 +50,11 @@ pub fn to_ezpz(p: &Problem) -> Option<EzpzProblem> {
         cons.push(match *c {
             Con::Coincident { a, b } => Ez::PointsCoincident(ez_point(a), ez_point(b)),
             Con::Distance { a, b, d } => Ez::Distance(ez_point(a), ez_point(b), d),
-            Con::Angle { l1, l2, deg } => {
-                Ez::LinesAtAngle(line(l1), line(l2), AngleKind::Other(Angle::from_degrees(deg)))
-            }
+            Con::Angle { l1, l2, deg } => Ez::LinesAtAngle(
+                line(l1),
+                line(l2),
+                AngleKind::Other(Angle::from_degrees(deg)),
+            ),
             Con::Horizontal { l } => Ez::Horizontal(line(l)),
             Con::Vertical { l } => Ez::Vertical(line(l)),
             // Both ends at distance r: the radius and the arc's implicit equal radii.
@@ -103,7 +105,8 @@ pub fn to_planegcs(p: &Problem) -> Option<Value> {
     if !p.planar {
         return None;
     }
-    let mut prims = Vec::with_capacity(p.points.len() + p.lines.len() + 2 * p.arcs.len() + p.cons.len());
+    let mut prims =
+        Vec::with_capacity(p.points.len() + p.lines.len() + 2 * p.arcs.len() + p.cons.len());
     for (i, pt) in p.points.iter().enumerate() {
         prims.push(json!({"id": format!("p{i}"), "type": "point", "x": pt.start[0], "y": pt.start[1], "fixed": pt.fixed}));
     }
@@ -120,9 +123,11 @@ pub fn to_planegcs(p: &Problem) -> Option<Value> {
         if a1 < a0 {
             a1 += std::f64::consts::TAU;
         }
-        prims.push(json!({"id": format!("a{i}"), "type": "arc", "c_id": format!("p{}", a.center),
+        prims.push(
+            json!({"id": format!("a{i}"), "type": "arc", "c_id": format!("p{}", a.center),
             "radius": radius, "start_angle": a0, "end_angle": a1,
-            "start_id": format!("p{}", a.start), "end_id": format!("p{}", a.end)}));
+            "start_id": format!("p{}", a.start), "end_id": format!("p{}", a.end)}),
+        );
         prims.push(json!({"id": format!("ar{i}"), "type": "arc_rules", "a_id": format!("a{i}")}));
     }
     for (i, c) in p.cons.iter().enumerate() {

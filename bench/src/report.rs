@@ -249,7 +249,10 @@ pub fn markdown(r: &Results, command: &str) -> String {
         let _ = writeln!(o, "### {}\n\n{}.\n", f.name(), f.describe());
         table(&mut o, r, f, Variant::Solvable, false);
     }
-    let _ = writeln!(o, "## Build times (median, problem construction in each API)\n");
+    let _ = writeln!(
+        o,
+        "## Build times (median, problem construction in each API)\n"
+    );
     for f in Family::ALL {
         if sizes_of(r, f, Variant::Solvable).is_empty() {
             continue;
@@ -280,7 +283,10 @@ pub fn markdown(r: &Results, command: &str) -> String {
         "The outcome each solver reported for every problem it ran, in its own words, with the \
          largest residual the checker measured.\n"
     );
-    let _ = writeln!(o, "| problem | solver | outcome | residual | runs |\n| --- | --- | --- | ---: | ---: |");
+    let _ = writeln!(
+        o,
+        "| problem | solver | outcome | residual | runs |\n| --- | --- | --- | ---: | ---: |"
+    );
     for c in &r.cells {
         if matches!(c.verdict, Verdict::NotRun { .. }) {
             continue;
@@ -349,8 +355,21 @@ pub fn svg(r: &Results) -> String {
         .filter_map(|c| c.solve_ms)
         .filter(|&t| t > 0.0)
         .collect();
-    let ylo = times.iter().copied().fold(f64::INFINITY, f64::min).max(1e-4).log10().floor();
-    let yhi = times.iter().copied().fold(0.0f64, f64::max).max(1e-3).log10().ceil().max(ylo + 1.0);
+    let ylo = times
+        .iter()
+        .copied()
+        .fold(f64::INFINITY, f64::min)
+        .max(1e-4)
+        .log10()
+        .floor();
+    let yhi = times
+        .iter()
+        .copied()
+        .fold(0.0f64, f64::max)
+        .max(1e-3)
+        .log10()
+        .ceil()
+        .max(ylo + 1.0);
     let mut o = String::new();
     let _ = writeln!(
         o,
@@ -361,7 +380,10 @@ pub fn svg(r: &Results) -> String {
         let (ox, oy) = ((i % cols) as f64 * pw, (i / cols) as f64 * ph);
         let sizes = sizes_of(r, f, Variant::Solvable);
         let xlo = (sizes[0] as f64).log10().floor();
-        let xhi = (*sizes.last().unwrap_or(&10) as f64).log10().ceil().max(xlo + 1.0);
+        let xhi = (*sizes.last().unwrap_or(&10) as f64)
+            .log10()
+            .ceil()
+            .max(xlo + 1.0);
         let (x0, x1, y0, y1) = (ox + ml, ox + pw - mr, oy + ph - mb, oy + mt);
         let px = |s: f64| x0 + (s.log10() - xlo) / (xhi - xlo) * (x1 - x0);
         let py = |t: f64| y0 - (t.log10() - ylo) / (yhi - ylo) * (y0 - y1);
@@ -427,7 +449,11 @@ pub fn svg(r: &Results) -> String {
                 );
             }
             for (x, y) in &pts {
-                let _ = writeln!(o, r#"<circle cx="{x:.1}" cy="{y:.1}" r="3" fill="{}"/>"#, color(s));
+                let _ = writeln!(
+                    o,
+                    r#"<circle cx="{x:.1}" cy="{y:.1}" r="3" fill="{}"/>"#,
+                    color(s)
+                );
             }
             for c in &cells {
                 if !c.verdict.has_time() && !matches!(c.verdict, Verdict::NotRun { .. }) {
@@ -452,7 +478,10 @@ pub fn svg(r: &Results) -> String {
     }
     // Legend in the next free panel.
     let i = families.len();
-    let (ox, oy) = ((i % cols) as f64 * pw + ml, (i / cols) as f64 * ph + mt + 10.0);
+    let (ox, oy) = (
+        (i % cols) as f64 * pw + ml,
+        (i / cols) as f64 * ph + mt + 10.0,
+    );
     let _ = writeln!(
         o,
         r#"<text x="{ox}" y="{oy}" font-size="12" font-weight="bold">median solve time (log) against size (log)</text>"#

@@ -220,8 +220,18 @@ pub fn run_with_limit(mut cmd: Command, limit: Duration) -> std::io::Result<Chil
             String::from_utf8_lossy(&s).into_owned()
         })
     };
-    let out = pipe(child.stdout.take().map(|x| Box::new(x) as Box<dyn Read + Send>));
-    let err = pipe(child.stderr.take().map(|x| Box::new(x) as Box<dyn Read + Send>));
+    let out = pipe(
+        child
+            .stdout
+            .take()
+            .map(|x| Box::new(x) as Box<dyn Read + Send>),
+    );
+    let err = pipe(
+        child
+            .stderr
+            .take()
+            .map(|x| Box::new(x) as Box<dyn Read + Send>),
+    );
     let status = loop {
         if let Some(s) = child.try_wait()? {
             break Some(s);
@@ -397,7 +407,11 @@ impl<'a> ProblemFiles<'a> {
         ProblemFiles { problem, stem }
     }
 
-    fn file(&self, ext: &str, make: impl FnOnce() -> anyhow::Result<String>) -> anyhow::Result<PathBuf> {
+    fn file(
+        &self,
+        ext: &str,
+        make: impl FnOnce() -> anyhow::Result<String>,
+    ) -> anyhow::Result<PathBuf> {
         let path = self.stem.with_extension(ext);
         if !path.exists() {
             std::fs::write(&path, make()?)?;
@@ -418,7 +432,9 @@ impl<'a> ProblemFiles<'a> {
     /// # Errors
     /// When the file cannot be written.
     pub fn records(&self) -> anyhow::Result<PathBuf> {
-        self.file("slvs.txt", || Ok(slvs::to_records(&slvs::build(self.problem)?)))
+        self.file("slvs.txt", || {
+            Ok(slvs::to_records(&slvs::build(self.problem)?))
+        })
     }
 
     /// PlaneGCS primitives.
@@ -492,7 +508,8 @@ pub fn run_solver(
         Solver::PlaneGcs => match &runners.node {
             Some(node) => files.planegcs().map(|f| {
                 let mut c = Command::new(node);
-                c.arg(runners.scripts.join("planegcs_runner.mjs")).args(args(f));
+                c.arg(runners.scripts.join("planegcs_runner.mjs"))
+                    .args(args(f));
                 c
             }),
             None => return not_run("not available".into()),

@@ -98,14 +98,26 @@ fn slvs_c(bench: &Path, build_dir: &Path) -> Result<(PathBuf, String), String> {
         }
         let mut c = cmd(
             "apt-get",
-            &["install", "-y", "-qq", "--no-install-recommends", "libslvs1-dev"],
+            &[
+                "install",
+                "-y",
+                "-qq",
+                "--no-install-recommends",
+                "libslvs1-dev",
+            ],
         );
         c.env("DEBIAN_FRONTEND", "noninteractive");
         if capture(c, 600).is_err() {
             capture(cmd("apt-get", &["update", "-qq"]), 600)?;
             let mut c = cmd(
                 "apt-get",
-                &["install", "-y", "-qq", "--no-install-recommends", "libslvs1-dev"],
+                &[
+                    "install",
+                    "-y",
+                    "-qq",
+                    "--no-install-recommends",
+                    "libslvs1-dev",
+                ],
             );
             c.env("DEBIAN_FRONTEND", "noninteractive");
             capture(c, 600)?;
@@ -119,11 +131,8 @@ fn slvs_c(bench: &Path, build_dir: &Path) -> Result<(PathBuf, String), String> {
         src.to_string_lossy().into_owned(),
     );
     capture(cmd("cc", &["-O2", "-o", &exe_s, &src_s, "-lslvs"]), 120)?;
-    let ver = capture(
-        cmd("dpkg-query", &["-W", "-f=${Version}", "libslvs1"]),
-        30,
-    )
-    .unwrap_or_else(|_| "unknown version".into());
+    let ver = capture(cmd("dpkg-query", &["-W", "-f=${Version}", "libslvs1"]), 30)
+        .unwrap_or_else(|_| "unknown version".into());
     Ok((exe, ver))
 }
 

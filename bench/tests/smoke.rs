@@ -45,14 +45,21 @@ fn generators_are_deterministic_and_valid() {
     assert!(rec.starts_with("G 2\n"));
     let last = rec.lines().last().unwrap();
     assert_eq!(last.split_whitespace().count(), 1 + p.points.len());
-    assert_eq!(rec.lines().filter(|l| l.starts_with("C ")).count(), p.cons.len());
+    assert_eq!(
+        rec.lines().filter(|l| l.starts_with("C ")).count(),
+        p.cons.len()
+    );
 }
 
 #[test]
 fn loci_and_ezpz_solve_every_family_and_the_checker_agrees() {
     for f in Family::ALL {
         let p = generate(f, Variant::Solvable, 10);
-        assert!(max_residual(&p, &start_points(&p)) > TOLERANCE, "{} starts solved", p.label());
+        assert!(
+            max_residual(&p, &start_points(&p)) > TOLERANCE,
+            "{} starts solved",
+            p.label()
+        );
         let solvers: &[Solver] = if f.is_2d() {
             &[Solver::Loci, Solver::Ezpz]
         } else {
@@ -61,7 +68,14 @@ fn loci_and_ezpz_solve_every_family_and_the_checker_agrees() {
         for &s in solvers {
             let out = run_in_process(s, &p, 2, 1.0).unwrap();
             assert_eq!(out.solve_ms.len(), 2);
-            assert_eq!(judge(&p, &out).0, Verdict::Solved, "{} on {}: {}", s.name(), p.label(), out.detail);
+            assert_eq!(
+                judge(&p, &out).0,
+                Verdict::Solved,
+                "{} on {}: {}",
+                s.name(),
+                p.label(),
+                out.detail
+            );
         }
         let bad = generate(f, Variant::Inconsistent, 10);
         let out = run_in_process(Solver::Loci, &bad, 1, 1.0).unwrap();
@@ -148,7 +162,11 @@ fn quick_mode_writes_the_report() {
         .arg(&out)
         .output()
         .expect("runs");
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
     let md = std::fs::read_to_string(out.join("benchmarks.md")).unwrap();
     let svg = std::fs::read_to_string(out.join("benchmarks.svg")).unwrap();
     let json = std::fs::read_to_string(out.join("benchmarks.json")).unwrap();
@@ -167,10 +185,9 @@ fn quick_mode_writes_the_report() {
             continue;
         }
         match c.variant {
-            Variant::Inconsistent => assert!(
-                matches!(c.verdict, Verdict::Detected { .. }),
-                "{c:?}"
-            ),
+            Variant::Inconsistent => {
+                assert!(matches!(c.verdict, Verdict::Detected { .. }), "{c:?}")
+            }
             _ => assert_eq!(c.verdict, Verdict::Solved, "{c:?}"),
         }
         assert!(c.solve_ms.is_some_and(|t| t > 0.0) && c.runs >= 1, "{c:?}");
