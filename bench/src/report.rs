@@ -34,7 +34,10 @@ pub fn verdict_text(v: &Verdict) -> String {
         Verdict::Crashed { detail } if detail.starts_with("out of memory") => {
             "out of memory".into()
         }
-        Verdict::Crashed { detail } => format!("crashed ({detail})"),
+        // The signal or exit code; the last words are in the table of what each solver said.
+        Verdict::Crashed { detail } => {
+            format!("crashed ({})", detail.split(':').next().unwrap_or(detail))
+        }
         Verdict::NotRun { reason } => short_reason(reason),
     }
 }
@@ -295,10 +298,10 @@ pub fn markdown(r: &Results, command: &str) -> String {
             Variant::Solvable => format!("{}/{}", c.family.name(), c.size),
             v => format!("{}/{}/{}", c.family.name(), v.name(), c.size),
         };
-        let said = if c.detail.is_empty() {
-            verdict_text(&c.verdict)
-        } else {
-            c.detail.clone()
+        let said = match &c.verdict {
+            Verdict::Crashed { detail } => format!("crashed: {detail}"),
+            v if c.detail.is_empty() => verdict_text(v),
+            _ => c.detail.clone(),
         };
         let _ = writeln!(
             o,
