@@ -3,6 +3,7 @@
 //! Exit status: 0 solved (okay or okay with redundant constraints), 1 inconsistent,
 //! 2 did not converge, 3 bad input (unreadable, malformed or invalid model).
 
+mod conformance;
 mod report;
 
 use clap::{Parser, Subcommand};
@@ -33,6 +34,11 @@ enum Command {
         /// Write the solved problem (JSON) here.
         #[arg(short, long)]
         output: Option<PathBuf>,
+    },
+    /// Check loci against SolveSpace's regression fixtures and print a Markdown report.
+    Conformance {
+        /// The folder of `.slvs` files (searched recursively).
+        dir: PathBuf,
     },
 }
 
@@ -96,6 +102,12 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
                     .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?;
             }
             Ok(exit_code(rep.outcome))
+        }
+        Command::Conformance { dir } => {
+            let cmd = format!("loci conformance {}", dir.display());
+            let (md, _) = conformance::run(&dir, &cmd)?;
+            print!("{md}");
+            Ok(code::SOLVED)
         }
     }
 }
