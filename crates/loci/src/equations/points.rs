@@ -140,12 +140,29 @@ pub(super) fn symmetric_line<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows
     out.push(d.dot(b.minus(a)) / len);
 }
 
-/// `pt_a` is at the midpoint of line `entity_a`.
+/// `pt_a` is at the midpoint of line `entity_a`; or, with no `pt_a`, the midpoint of line
+/// `entity_a` lies in plane `entity_b` (SolveSpace's second form of this constraint).
 pub(super) fn at_midpoint<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let w = e.wp();
     let l = e.line(0);
     let mid = g.at(&l[0], w).plus(g.at(&l[1], w)).scale_f(0.5);
-    let d = g.at(e.pt(0), w).minus(mid);
+    let Some(p) = &e.pts[0] else {
+        // In a workplane the midpoint is taken there and lifted back into space, as
+        // SolveSpace does.
+        let m = match w {
+            None => mid,
+            Some(f) => {
+                let q = g.quat(f.q);
+                g.v3(f.origin)
+                    .plus(q.u().scale(mid.x))
+                    .plus(q.v().scale(mid.y))
+            }
+        };
+        let plane = e.frame(1);
+        out.push(m.minus(g.v3(plane.origin)).dot(g.plane_normal(plane)));
+        return;
+    };
+    let d = g.at(p, w).minus(mid);
     out.push(d.x);
     out.push(d.y);
     if w.is_none() {
