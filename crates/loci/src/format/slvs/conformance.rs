@@ -134,6 +134,16 @@ pub fn check(bytes: &[u8], seed: u64) -> FixtureCheck {
             .map(|p| p.h)
             .collect()
     };
+    // A `where_dragged` point stays where it is when the equations are written: its position
+    // is that constraint's data, like a dimension's value, so it is not perturbed.
+    let locked: Vec<ParamId> = file
+        .system
+        .constraints()
+        .iter()
+        .filter(|c| c.kind == crate::ConstraintKind::WhereDragged && !c.reference)
+        .filter_map(|c| c.pt_a.and_then(|p| file.system.entity(p)))
+        .flat_map(|e| e.kind.params().to_vec())
+        .collect();
     let error = |f: &SlvsFile, ps: &[ParamId]| -> f64 {
         ps.iter()
             .map(|p| (f.system.value(*p).unwrap_or(f64::NAN) - saved[p]).abs())
@@ -173,7 +183,10 @@ pub fn check(bytes: &[u8], seed: u64) -> FixtureCheck {
                         check.agree_error
                     ));
                 }
-                let (err, problem) = recover_group(&mut recover, g.h, &ps, &saved, r, &mut rng);
+                let free: Vec<ParamId> =
+                    ps.iter().copied().filter(|p| !locked.contains(p)).collect();
+                let (err, problem) =
+                    recover_group(&mut recover, g.h, &ps, &free, &saved, r, &mut rng);
                 check.recover_error = err;
                 if check.problem.is_none() {
                     check.problem = problem;
@@ -201,18 +214,28 @@ fn outcome_problem(r: &crate::Report, allow_redundant: bool) -> String {
     s
 }
 
-/// Perturbs group `g` in `file`, solves it, and measures how far it lands from `saved`;
+/// Perturbs the `perturbed` parameters of group `g` (of all its parameters `ps`), solves it, and measures how far it lands from `saved`;
 /// leaves the solution in `file` for the groups after it.
 fn recover_group(
     file: &mut SlvsFile,
     g: GroupId,
     ps: &[ParamId],
+    perturbed: &[ParamId],
     saved: &HashMap<ParamId, f64>,
     expected: &crate::Report,
     rng: &mut Rng,
 ) -> (f64, Option<String>) {
     let cfg = Config::default();
-    let mut start: Vec<f64> = ps.iter().map(|p| saved[p] + rng.perturbation()).collect();
+    let mut start: Vec<f64> = ps
+        .iter()
+        .map(|p| {
+            if perturbed.contains(p) {
+                saved[p] + rng.perturbation()
+            } else {
+                saved[p]
+            }
+        })
+        .collect();
     let mut err = f64::INFINITY;
     for round in 0..=ANCHOR_ROUNDS {
         for (p, v) in ps.iter().zip(&start) {
