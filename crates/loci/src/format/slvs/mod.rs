@@ -275,3 +275,6 @@ impl SlvsFile {
     }
 }
 
+
+#[cfg(test)]
+mod tests;
