@@ -6,7 +6,10 @@ use loci::format::slvs::conformance::{check, render_markdown, seed_for, FixtureC
 use std::path::{Path, PathBuf};
 
 /// Runs the check over `dir` and returns the report; file names are relative to `dir`.
-pub(crate) fn run(dir: &Path, command: &str) -> anyhow::Result<(String, Vec<(String, FixtureCheck)>)> {
+pub(crate) fn run(
+    dir: &Path,
+    command: &str,
+) -> anyhow::Result<(String, Vec<(String, FixtureCheck)>)> {
     let mut files = Vec::new();
     collect(dir, &mut files).with_context(|| format!("cannot read {}", dir.display()))?;
     files.sort();

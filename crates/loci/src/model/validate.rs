@@ -190,9 +190,8 @@ impl System {
             super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical
         ) && c.entity_a.is_none();
         // The midpoint of a line may be held on a plane instead of at a point.
-        let plane_form = c.kind == super::ConstraintKind::AtMidpoint
-            && c.pt_a.is_none()
-            && c.entity_b.is_some();
+        let plane_form =
+            c.kind == super::ConstraintKind::AtMidpoint && c.pt_a.is_none() && c.entity_b.is_some();
         for (i, want) in sig.fields.iter().enumerate() {
             let want = if point_form {
                 match i {

@@ -60,13 +60,6 @@ pub(crate) fn constraint(code: i64) -> Option<ConstraintCode> {
     Some(ConstraintCode::Kind(k))
 }
 
-/// The file number of a constraint type (the inverse of [`constraint`]).
-pub(crate) fn constraint_code(kind: ConstraintKind) -> i64 {
-    (10..=1000)
-        .find(|&c| constraint(c) == Some(ConstraintCode::Kind(kind)))
-        .unwrap_or(0)
-}
-
 /// Entity types of the file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum EntityCode {
@@ -227,28 +220,4 @@ impl GroupKind {
     pub fn is_sketch(self) -> bool {
         matches!(self, GroupKind::Drawing3d | GroupKind::DrawingWorkplane)
     }
-}
-
-/// Request types of the file format.
-pub(crate) mod request {
-    pub const WORKPLANE: i64 = 100;
-    pub const DATUM_POINT: i64 = 101;
-    pub const LINE_SEGMENT: i64 = 200;
-    pub const CUBIC: i64 = 300;
-    pub const CIRCLE: i64 = 400;
-    pub const ARC_OF_CIRCLE: i64 = 500;
-}
-
-/// Entity type numbers the writer uses.
-pub(crate) mod entity {
-    pub const POINT_IN_3D: i64 = 2000;
-    pub const POINT_IN_2D: i64 = 2001;
-    pub const NORMAL_IN_3D: i64 = 3000;
-    pub const NORMAL_IN_2D: i64 = 3001;
-    pub const DISTANCE: i64 = 4000;
-    pub const WORKPLANE: i64 = 10000;
-    pub const LINE_SEGMENT: i64 = 11000;
-    pub const CUBIC: i64 = 12000;
-    pub const CIRCLE: i64 = 13000;
-    pub const ARC_OF_CIRCLE: i64 = 14000;
 }

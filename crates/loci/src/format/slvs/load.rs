@@ -13,10 +13,7 @@ use super::codes::{self, ConstraintCode, EntityCode, GroupKind};
 use super::records::{Kind, Record};
 use super::{GroupStatus, Note, ParamLine, SlvsError, SlvsFile, SlvsGroup};
 use crate::geom::quaternion_from_uv;
-use crate::model::{
-    Constraint, Entity, EntityId, GroupId, ObjectId, Param, ParamId,
-    System,
-};
+use crate::model::{Constraint, Entity, EntityId, GroupId, ObjectId, Param, ParamId, System};
 use std::collections::{HashMap, HashSet};
 
 /// The group of geometry loci holds constant: copies a group computes from earlier groups
@@ -28,11 +25,6 @@ const REFERENCES: u32 = 1;
 
 const GROUP_BIT: u32 = 0x8000_0000;
 const CONSTRAINT_BIT: u32 = 0x4000_0000;
-
-struct RequestInfo {
-    group: u32,
-    kind: i64,
-}
 
 /// Hands out handles no object of the file uses, for the constants loci adds.
 struct Fresh {
@@ -61,7 +53,8 @@ struct Builder<'a> {
     records: &'a [Record],
     sys: System,
     notes: Vec<Note>,
-    requests: HashMap<u32, RequestInfo>,
+    /// Request handle -> its group.
+    requests: HashMap<u32, u32>,
     groups: HashMap<u32, usize>,
     fresh_param: Fresh,
     fresh_entity: Fresh,
@@ -185,10 +178,7 @@ impl Builder<'_> {
             } else if kind.is_sketch() {
                 GroupStatus::Solve
             } else {
-                GroupStatus::Unsupported(format!(
-                    "{} groups are not modelled by loci",
-                    kind.name()
-                ))
+                GroupStatus::Unsupported(format!("{} groups are not modelled by loci", kind.name()))
             };
             self.groups.insert(h, out.len());
             out.push(SlvsGroup {
@@ -221,11 +211,7 @@ impl Builder<'_> {
                     handle: group,
                 });
             }
-            let info = RequestInfo {
-                group,
-                kind: r.int("Request.type"),
-            };
-            if self.requests.insert(h, info).is_some() {
+            if self.requests.insert(h, group).is_some() {
                 return Err(SlvsError::Duplicate {
                     line: r.line,
                     record: "Request",
@@ -242,7 +228,7 @@ impl Builder<'_> {
             let g = (h >> 16) & 0x7fff;
             self.groups.contains_key(&g).then_some(g)
         } else {
-            self.requests.get(&(h >> 16)).map(|r| r.group)
+            self.requests.get(&(h >> 16)).copied()
         }
     }
 
@@ -470,11 +456,21 @@ impl Builder<'_> {
                 }
             },
             E::CubicPeriodic => {
-                self.skip(h, r, kind, "periodic splines are not modelled (their points are)");
+                self.skip(
+                    h,
+                    r,
+                    kind,
+                    "periodic splines are not modelled (their points are)",
+                );
                 return Ok(None);
             }
             E::TtfText | E::Image => {
-                self.skip(h, r, kind, "text and images are not modelled (their points are)");
+                self.skip(
+                    h,
+                    r,
+                    kind,
+                    "text and images are not modelled (their points are)",
+                );
                 return Ok(None);
             }
             E::PointIn3d | E::PointIn2d | E::NormalIn3d | E::Distance => {
@@ -581,12 +577,10 @@ impl Builder<'_> {
                 other2: r.flag("Constraint.other2"),
                 reference,
             };
-            self.sys
-                .add_constraint(c)
-                .map_err(|e| SlvsError::Model {
-                    line: r.line,
-                    source: e,
-                })?;
+            self.sys.add_constraint(c).map_err(|e| SlvsError::Model {
+                line: r.line,
+                source: e,
+            })?;
         }
         Ok(())
     }

@@ -27,14 +27,12 @@
 
 mod codes;
 pub mod conformance;
-// mod export;
 mod load;
 mod records;
 mod solve;
 mod write;
 
 pub use codes::GroupKind;
-// pub use export::to_slvs;
 pub use load::FIXED_GROUP;
 pub use solve::{solve_all, GroupResult, GroupSolve};
 
@@ -193,7 +191,9 @@ pub enum SlvsError {
         code: i64,
     },
     /// A reference to an object that is not in the file.
-    #[error("line {line}: {owner}: {field} refers to {target} {handle:08x}, which is not in the file")]
+    #[error(
+        "line {line}: {owner}: {field} refers to {target} {handle:08x}, which is not in the file"
+    )]
     Dangling {
         /// The line of the reference.
         line: usize,
@@ -274,7 +274,6 @@ impl SlvsFile {
         self.param_lines.iter().map(|p| p.h)
     }
 }
-
 
 #[cfg(test)]
 mod tests;

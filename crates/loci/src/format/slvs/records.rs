@@ -271,14 +271,6 @@ impl Record {
     pub fn line_of(&self, key: &str) -> usize {
         self.get(key).map_or(self.line, |f| f.line)
     }
-
-    /// The remap table of a group.
-    pub fn remap(&self) -> &[(u32, u32, u32)] {
-        match self.get("Group.remap").map(|f| &f.value) {
-            Some(Value::Remap(v)) => v,
-            _ => &[],
-        }
-    }
 }
 
 /// Where each line of the original bytes starts and ends (without its `\n`).

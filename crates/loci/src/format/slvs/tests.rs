@@ -190,7 +190,10 @@ fn loads_groups_params_entities_and_constraints() {
     let kinds: Vec<_> = f.system.constraints().iter().map(|c| c.kind).collect();
     assert_eq!(
         kinds,
-        [ConstraintKind::PtPtDistance, ConstraintKind::PointsCoincident]
+        [
+            ConstraintKind::PtPtDistance,
+            ConstraintKind::PointsCoincident
+        ]
     );
     assert!(f.notes.iter().any(|n| n.message.contains("comment")));
 }
@@ -231,7 +234,10 @@ fn saving_rewrites_only_param_values() {
     assert_eq!(kept(&old[1..]), kept(&new[1..]));
     // Point A moved from (-5, 0) to the origin: its value line is rewritten in place.
     assert!(!new.contains(&"Param.val=-5.00000000000000000000"));
-    assert!(new.iter().any(|l| l.starts_with("Param.val=0.00000000000000000") || l.starts_with("Param.val=-0.0000000000000000")));
+    assert!(new
+        .iter()
+        .any(|l| l.starts_with("Param.val=0.00000000000000000")
+            || l.starts_with("Param.val=-0.0000000000000000")));
     assert!(new.contains(&"Constraint.disp.offset.y=2.50000000000000000000"));
     assert!(out.starts_with(super::records::MAGIC));
 }
@@ -331,7 +337,10 @@ fn bad_number() {
 
 #[test]
 fn unknown_key() {
-    let bad = SKETCH.replace("Entity.construction=1\nAddEntity", "Entity.colour=1\nAddEntity");
+    let bad = SKETCH.replace(
+        "Entity.construction=1\nAddEntity",
+        "Entity.colour=1\nAddEntity",
+    );
     let e = err(&bad);
     assert!(
         matches!(&e, SlvsError::UnknownKey { key, .. } if key == "Entity.colour"),
@@ -342,7 +351,10 @@ fn unknown_key() {
 
 #[test]
 fn unrecognised_line() {
-    let bad = SKETCH.replace("AddRequest\n\nRequest.h.v=00000004", "AddRequest\nhello\nRequest.h.v=00000004");
+    let bad = SKETCH.replace(
+        "AddRequest\n\nRequest.h.v=00000004",
+        "AddRequest\nhello\nRequest.h.v=00000004",
+    );
     let e = err(&bad);
     assert!(matches!(e, SlvsError::UnrecognizedLine { .. }), "{e}");
     assert_eq!(e.line(), line_of(&bad, "hello"));
@@ -353,7 +365,14 @@ fn constraint_pointing_at_a_missing_entity() {
     let bad = SKETCH.replace("Constraint.ptB.v=00050000", "Constraint.ptB.v=00090000");
     let e = err(&bad);
     assert!(
-        matches!(&e, SlvsError::Dangling { handle: 0x0009_0000, field: "Constraint.ptB.v", .. }),
+        matches!(
+            &e,
+            SlvsError::Dangling {
+                handle: 0x0009_0000,
+                field: "Constraint.ptB.v",
+                ..
+            }
+        ),
         "{e}"
     );
     assert_eq!(e.line(), line_of(&bad, "Constraint.ptB.v="));
@@ -369,7 +388,10 @@ fn entity_pointing_at_a_missing_entity() {
 
 #[test]
 fn record_closed_by_the_wrong_add_line() {
-    let bad = SKETCH.replace("Constraint.comment=a note\nAddConstraint", "Constraint.comment=a note\nAddEntity");
+    let bad = SKETCH.replace(
+        "Constraint.comment=a note\nAddConstraint",
+        "Constraint.comment=a note\nAddEntity",
+    );
     let e = err(&bad);
     assert!(matches!(e, SlvsError::MixedRecord { .. }), "{e}");
 }
@@ -379,7 +401,14 @@ fn duplicate_handles() {
     let bad = SKETCH.replace("Constraint.h.v=00000002", "Constraint.h.v=00000001");
     let e = err(&bad);
     assert!(
-        matches!(e, SlvsError::Duplicate { record: "Constraint", handle: 1, .. }),
+        matches!(
+            e,
+            SlvsError::Duplicate {
+                record: "Constraint",
+                handle: 1,
+                ..
+            }
+        ),
         "{e}"
     );
 }
