@@ -96,11 +96,13 @@ fn cos_sin<S: Scalar>(a: Vec3<S>, b: Vec3<S>, planar: bool) -> (S, S) {
     (a.dot(b) * inv, s * inv)
 }
 
-/// The direction of entity `i`: a line's end minus start, or a normal's N axis (SolveSpace
-/// lets angle, parallel and perpendicular take either), projected into the workplane.
+/// The direction of entity `i`: a line's start minus end, or a normal's N axis (SolveSpace
+/// lets angle, parallel and perpendicular take either, with its `VectorGetExprs`), projected
+/// into the workplane. Between two lines the orientation cancels out; between a line and a
+/// normal it decides the angle.
 fn vector<S: Scalar>(e: &Equation, g: &Geo<S>, i: usize, w: Option<&Frame>) -> Vec3<S> {
     match e.ent(i) {
-        Ent::Line(l) => g.line_dir(l, w),
+        Ent::Line(l) => g.at(&l[0], w).minus(g.at(&l[1], w)),
         other => g.project_dir(super::points::direction(other, g), w),
     }
 }

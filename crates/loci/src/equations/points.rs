@@ -45,17 +45,20 @@ pub(super) fn where_dragged<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<
     }
 }
 
-/// `(pt_b - pt_a) . dir / |dir| = val`, with `dir` a line's or a normal's direction.
+/// `(pt_b - pt_a) . dir / |dir| = val`, with `dir` a line's or a normal's direction
+/// (see [`direction`]).
 pub(super) fn proj_pt_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let dir = direction(e.ent(0), g);
     let d = g.pos(e.pt(1)).minus(g.pos(e.pt(0)));
     out.push(d.dot(dir) / dir.norm() - e.val);
 }
 
-/// The direction of a line (end minus start) or of a normal (its N axis), in space.
+/// The direction of a line or of a normal (its N axis), in space. A line's direction is
+/// start minus end, as SolveSpace's `VectorGetExprs` has it: signed dimensions along a line
+/// (`proj_pt_distance`) and angles between a line and a normal depend on it.
 pub(super) fn direction<S: Scalar>(ent: &Ent, g: &Geo<S>) -> Vec3<S> {
     match ent {
-        Ent::Line(l) => g.pos(&l[1]).minus(g.pos(&l[0])),
+        Ent::Line(l) => g.pos(&l[0]).minus(g.pos(&l[1])),
         Ent::Normal(q) => g.quat(*q).n(),
         Ent::Workplane(f) => g.plane_normal(f),
         _ => unreachable!("validated: a line or a normal"),
