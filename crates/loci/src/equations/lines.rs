@@ -5,14 +5,17 @@ use super::refs::{Frame, Geo, PointRef};
 use super::{Equation, Rows};
 use crate::geom::{Scalar, Vec3};
 
-/// Distance from `p` to the line through `l`: signed in a workplane (positive to the left of
-/// start→end, i.e. above a rightward line), unsigned in space.
+/// Distance from `p` to the line through `l`: unsigned in space; signed in a workplane,
+/// positive to the right of start→end (below a rightward line), negative to its left.
+///
+/// That is SolveSpace's sign: its fixture `constraint/pt_line_distance/normal.slvs` holds the
+/// point (-10, 10) above the line (-15, 5)→(-5, 5) with a distance of -5.
 fn pt_line<S: Scalar>(g: &Geo<S>, p: &PointRef, l: &[PointRef; 2], w: Option<&Frame>) -> S {
     let a = g.at(&l[0], w);
     let d = g.at(&l[1], w).minus(a);
     let c = d.cross(g.at(p, w).minus(a));
     match w {
-        Some(_) => c.z / d.norm(),
+        Some(_) => -c.z / d.norm(),
         None => c.norm() / d.norm(),
     }
 }
