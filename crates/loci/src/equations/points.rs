@@ -104,7 +104,11 @@ pub(super) fn symmetric<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) 
             let (a, b) = (g.pos(e.pt(0)), g.pos(e.pt(1)));
             let mid = a.plus(b).scale_f(0.5);
             out.push(mid.minus(g.v3(f.origin)).dot(n));
-            push_two(b.minus(a).cross(n).scale(S::cst(1.0) / n.norm()), e.choice, out);
+            push_two(
+                b.minus(a).cross(n).scale(S::cst(1.0) / n.norm()),
+                e.choice,
+                out,
+            );
         }
         Some(w) => {
             let (a, b) = (g.at(e.pt(0), Some(w)), g.at(e.pt(1), Some(w)));
