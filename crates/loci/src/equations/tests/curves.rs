@@ -111,6 +111,28 @@ pub(super) fn cases() -> Vec<Case> {
             },
         },
         Case {
+            name: "curve_curve_tangent (arc of another workplane, cubic)",
+            kind: Some(K::CurveCurveTangent),
+            forms: &[Mixed],
+            build: |fx, f| {
+                // An arc of `wp2` from 30 degrees; its tangent there, in space, projected into
+                // the workplane the constraint is in, gives the cubic's start direction.
+                let a = fx.arc_deg(FIXED, fx.wp2, [0.5, -0.5], 2.0, 30.0, 120.0);
+                let [_, u2, v2, _] = fx.frame(fx.wp2);
+                let [_, u, v, _] = fx.frame(fx.wp);
+                let t = 30f64.to_radians();
+                let t3 = u2.scale(-t.sin()).plus(v2.scale(t.cos()));
+                let (du, dv) = (t3.dot(u), t3.dot(v));
+                let p0 = [1.0, 2.0, 0.4];
+                let p1 = [1.0 + 1.5 * du, 2.0 + 1.5 * dv, -0.3];
+                let b = fx.cubic(MOVING, f, [p0, p1, [3.0, 0.0, 0.2], [4.0, 1.0, 0.0]]);
+                let c = fx.con(K::CurveCurveTangent, f).with_entities([a, b, 0, 0]);
+                // The cubic's end tangent (1, 1) against the projected arc tangent.
+                let want = (du - dv) / (du.hypot(dv) * 2f64.sqrt());
+                Built::new(c, Break::Flags(false, true), Expect::Rows(vec![want]))
+            },
+        },
+        Case {
             name: "curve_curve_tangent (cubic, cubic)",
             kind: Some(K::CurveCurveTangent),
             forms: &[Plane, Mixed],
