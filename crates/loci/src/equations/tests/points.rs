@@ -383,3 +383,49 @@ fn symmetric_in_space_keeps_the_informative_cross_components() {
         assert_eq!(rank(&jac, x.len(), &one.cols(&fx.sys, b)), 3, "axis {axis}");
     }
 }
+
+#[test]
+fn constraints_free_in_space_read_points_of_workplanes_in_space() {
+    // A point of the workplane and a point of `wp2`, used by constraints free in 3D: the
+    // residuals are those of their positions in space.
+    let mut fx = Fx::new();
+    let a = fx.p2(FIXED, fx.wp, [0.5, -1.0]);
+    let b = fx.p2(MOVING, fx.wp2, [2.0, 1.5]);
+    let (pa, pb) = (v3(fx.world(a)), v3(fx.world(b)));
+    let d = pb.minus(pa);
+    let dist = fx
+        .con(K::PtPtDistance, Free)
+        .with_points(a, b)
+        .with_val(1.0);
+    let one = compile(&fx.sys, &dist);
+    let r = one.residuals(&one.x(&fx.sys));
+    assert!((r[0] - (d.norm() - 1.0)).abs() < 1e-12, "{r:?}");
+    let same = fx.con(K::PointsCoincident, Free).with_points(a, b);
+    let one = compile(&fx.sys, &same);
+    let r = one.residuals(&one.x(&fx.sys));
+    let want = [-d.x, -d.y, -d.z];
+    assert!(
+        r.iter().zip(want).all(|(r, w)| (r - w).abs() < 1e-12),
+        "{r:?} vs {want:?}"
+    );
+    // The point of `wp2` can reach a point in space only where that is on `wp2`: put one
+    // there and solve the coincidence.
+    let [o2, u2, v2, _] = fx.frame(fx.wp2);
+    let target = fx.p3(FIXED, arr(o2.plus(u2.scale(1.6)).plus(v2.scale(1.2))));
+    let c = fx.con(K::PointsCoincident, Free).with_points(target, b);
+    fx.sys.add_constraint(c).expect("fresh constraint");
+    let r = crate::solve::solve(
+        &mut fx.sys,
+        crate::model::GroupId(MOVING),
+        &[],
+        &crate::solve::Config::default(),
+    )
+    .expect("solves");
+    assert!(r.outcome.is_ok(), "{r:?}");
+    let ps = fx.params(b);
+    let got = [fx.value(ps[0]), fx.value(ps[1])];
+    assert!(
+        (got[0] - 1.6).abs() < 1e-9 && (got[1] - 1.2).abs() < 1e-9,
+        "{got:?}"
+    );
+}
