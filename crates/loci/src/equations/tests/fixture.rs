@@ -93,7 +93,7 @@ pub(super) fn arr(v: Vec3<f64>) -> [f64; 3] {
     [v.x, v.y, v.z]
 }
 
-/// A deterministic generator (SplitMix64), so every run checks the same points.
+/// A deterministic generator (`SplitMix64`), so every run checks the same points.
 pub(super) struct Rng(u64);
 
 impl Rng {
@@ -575,10 +575,11 @@ pub(super) fn rank(jac: &[f64], n: usize, cols: &[usize]) -> usize {
             continue;
         }
         m.swap(rank, p);
-        for r in rank + 1..rows {
-            let k = m[r][c] / m[rank][c];
-            for j in c..cols.len() {
-                m[r][j] -= k * m[rank][j];
+        let pivot = m[rank].clone();
+        for row in &mut m[rank + 1..] {
+            let k = row[c] / pivot[c];
+            for (x, p) in row.iter_mut().zip(&pivot).skip(c) {
+                *x -= k * p;
             }
         }
         rank += 1;
