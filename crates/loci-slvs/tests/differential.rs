@@ -118,16 +118,18 @@ fn parse(out: &str) -> Vec<(String, Outcome)> {
         .collect()
 }
 
-/// The directory holding `libloci_slvs.a`: the profile directory of this test binary.
+/// The directory holding `libloci_slvs.a`: `cargo test` leaves it beside this test binary in
+/// `deps/`, `cargo build` in the profile directory above it.
 fn lib_dir() -> PathBuf {
     let exe = std::env::current_exe().unwrap();
-    let dir = exe.parent().unwrap().parent().unwrap().to_path_buf();
-    assert!(
-        dir.join("libloci_slvs.a").exists(),
-        "libloci_slvs.a not found in {}",
-        dir.display()
-    );
-    dir
+    let deps = exe.parent().unwrap().to_path_buf();
+    let candidates = [deps.clone(), deps.parent().unwrap().to_path_buf()];
+    for dir in &candidates {
+        if dir.join("libloci_slvs.a").exists() {
+            return dir.clone();
+        }
+    }
+    panic!("libloci_slvs.a not found in {} or its parent", deps.display());
 }
 
 fn crate_dir() -> &'static Path {
