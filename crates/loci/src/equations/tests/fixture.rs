@@ -482,7 +482,7 @@ impl One {
 /// [`Equation::choose`] and, for `where_dragged`, records the position to keep.
 pub(super) fn compile(sys: &System, c: &Constraint) -> One {
     sys.validate().expect("the fixture builds a valid model");
-    let (eq, l) = resolve_constraint(&Resolver { sys }, c).expect("constraint resolves");
+    let (eq, l) = resolve_constraint(&Resolver::new(sys), c).expect("constraint resolves");
     let mut one = One {
         eq,
         locals: l.params,
