@@ -61,7 +61,10 @@ impl fmt::Display for InputError {
                 write!(f, "sys->{array} is not aligned for its element type")
             }
             InputError::NegativeCount { count_field, count } => {
-                write!(f, "sys->{count_field} is {count}; a count cannot be negative")
+                write!(
+                    f,
+                    "sys->{count_field} is {count}; a count cannot be negative"
+                )
             }
             InputError::UnknownEntityType { entity, ty } => write!(
                 f,
@@ -217,7 +220,13 @@ mod tests {
     #[test]
     fn unknown_entity_type_is_named() {
         let err = entity(&blank_entity(7, 12345)).unwrap_err();
-        assert_eq!(err, InputError::UnknownEntityType { entity: 7, ty: 12345 });
+        assert_eq!(
+            err,
+            InputError::UnknownEntityType {
+                entity: 7,
+                ty: 12345
+            }
+        );
         assert_eq!(
             err.to_string(),
             "entity 7: type 12345 is not an SLVS_E_* entity type"
@@ -227,7 +236,23 @@ mod tests {
 
     #[test]
     fn dangling_constraint_reference_blames_the_constraint() {
-        let params = [Slvs_Param { h: 1, group: 1, val: 0.0 }, Slvs_Param { h: 2, group: 1, val: 0.0 }, Slvs_Param { h: 3, group: 1, val: 0.0 }];
+        let params = [
+            Slvs_Param {
+                h: 1,
+                group: 1,
+                val: 0.0,
+            },
+            Slvs_Param {
+                h: 2,
+                group: 1,
+                val: 0.0,
+            },
+            Slvs_Param {
+                h: 3,
+                group: 1,
+                val: 0.0,
+            },
+        ];
         let mut p = blank_entity(10, SLVS_E_POINT_IN_3D);
         p.param = [1, 2, 3, 0];
         let c = Slvs_Constraint {
