@@ -142,11 +142,11 @@ pub fn entity(e: &Slvs_Entity) -> Result<Entity, InputError> {
 /// The loci constraint for a C constraint; `entity_type` gives the `SLVS_E_*` type of an
 /// entity handle (when it exists).
 ///
-/// Two signed dimensions are measured along a line whose direction libslvs takes from its
-/// second point to its first, where loci goes from first to second: the distance from a point
-/// to a line in a workplane (`SLVS_C_PT_LINE_DISTANCE`), and the distance between two points
-/// projected onto a line (`SLVS_C_PROJ_PT_DISTANCE`). Their `valA` changes sign on the way in,
-/// so a C program gets the side libslvs gives it.
+/// The distance between two points projected onto a line (`SLVS_C_PROJ_PT_DISTANCE`) is
+/// measured along the line's direction, which libslvs takes from its second point to its
+/// first, where loci goes from first to second: its `valA` changes sign on the way in, so a C
+/// program gets the side libslvs gives it. (The signed distance from a point to a line in a
+/// workplane already has libslvs's sign in loci: positive to the right of start→end.)
 ///
 /// # Errors
 /// An unknown type.
@@ -161,11 +161,8 @@ pub fn constraint(
             constraint: c.h,
             ty: c.r#type,
         })?;
-    let reversed_line = match kind {
-        ConstraintKind::PtLineDistance => c.wrkpl != 0,
-        ConstraintKind::ProjPtDistance => entity_type(c.entityA) == Some(SLVS_E_LINE_SEGMENT),
-        _ => false,
-    };
+    let reversed_line = kind == ConstraintKind::ProjPtDistance
+        && entity_type(c.entityA) == Some(SLVS_E_LINE_SEGMENT);
     let val = if reversed_line { -c.valA } else { c.valA };
     Ok(Constraint::new(c.h, c.group, kind)
         .in_workplane(opt(c.wrkpl))
