@@ -2,7 +2,6 @@
 
 use crate::abi::*;
 use loci::{Constraint, ConstraintKind, Entity, ModelError, ObjectId, Param, System};
-use std::collections::HashMap;
 use std::fmt;
 use std::os::raw::c_int;
 
@@ -139,21 +138,13 @@ pub fn entity(e: &Slvs_Entity) -> Result<Entity, InputError> {
     })
 }
 
-/// The loci constraint for a C constraint; `entity_type` gives the `SLVS_E_*` type of an
-/// entity handle (when it exists).
-///
-/// The distance between two points projected onto a line (`SLVS_C_PROJ_PT_DISTANCE`) is
-/// measured along the line's direction, which libslvs takes from its second point to its
-/// first, where loci goes from first to second: its `valA` changes sign on the way in, so a C
-/// program gets the side libslvs gives it. (The signed distance from a point to a line in a
-/// workplane already has libslvs's sign in loci: positive to the right of start→end.)
+/// The loci constraint for a C constraint. loci's equations follow libslvs's conventions (the side a
+/// signed point-line distance takes, a line's direction from its second point to its first),
+/// so values pass through unchanged.
 ///
 /// # Errors
 /// An unknown type.
-pub fn constraint(
-    c: &Slvs_Constraint,
-    entity_type: impl Fn(Slvs_hEntity) -> Option<c_int>,
-) -> Result<Constraint, InputError> {
+pub fn constraint(c: &Slvs_Constraint) -> Result<Constraint, InputError> {
     let kind = u32::try_from(c.r#type)
         .ok()
         .and_then(ConstraintKind::from_slvs_code)
@@ -161,12 +152,9 @@ pub fn constraint(
             constraint: c.h,
             ty: c.r#type,
         })?;
-    let reversed_line = kind == ConstraintKind::ProjPtDistance
-        && entity_type(c.entityA) == Some(SLVS_E_LINE_SEGMENT);
-    let val = if reversed_line { -c.valA } else { c.valA };
     Ok(Constraint::new(c.h, c.group, kind)
         .in_workplane(opt(c.wrkpl))
-        .with_val(val)
+        .with_val(c.valA)
         .with_points(c.ptA, c.ptB)
         .with_entities([c.entityA, c.entityB, c.entityC, c.entityD])
         .with_flags(c.other != 0, c.other2 != 0))
@@ -189,9 +177,8 @@ pub fn system(
     for e in entities {
         sys.add_entity(entity(e)?)?;
     }
-    let types: HashMap<Slvs_hEntity, c_int> = entities.iter().map(|e| (e.h, e.r#type)).collect();
     for c in constraints {
-        sys.add_constraint(constraint(c, |h| types.get(&h).copied())?)?;
+        sys.add_constraint(constraint(c)?)?;
     }
     sys.validate()?;
     Ok(sys)

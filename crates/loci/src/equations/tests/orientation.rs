@@ -3,6 +3,8 @@
 use super::fixture::{
     axis_angle, compile, rank, Break, Built, Case, Expect, Form, Fx, Target, FIXED, MOVING,
 };
+use std::f64::consts::FRAC_PI_2;
+
 use crate::geom::Quat;
 use crate::model::ConstraintKind as K;
 use Form::{Free, Plane};
@@ -38,9 +40,9 @@ pub(super) fn cases() -> Vec<Case> {
             forms: &[Free, Plane],
             build: |fx, f| {
                 let (a, b, q) = same_pair(fx, f);
-                // B turned by 0.4 rad about its own N: the vector part of A conj(B) is
-                // -sin(0.2) times A's N.
-                let turned = quat(q).times(quat(axis_angle([0.0, 0.0, 1.0], 0.4)));
+                // B turned by 0.4 rad about its own U: N_a x N_b = sin(0.4) U_a, less its
+                // component along N_a's dominant axis, and U_a stays perpendicular to V_b.
+                let turned = quat(q).times(quat(axis_angle([1.0, 0.0, 0.0], 0.4)));
                 let ps = fx.params(b);
                 let brk = vec![
                     (ps[0], turned.w),
@@ -48,9 +50,13 @@ pub(super) fn cases() -> Vec<Case> {
                     (ps[2], turned.y),
                     (ps[3], turned.z),
                 ];
-                let n = quat(q).n().scale(-(0.2f64.sin()));
+                let (u, n) = (quat(q).u().scale(0.4f64.sin()), quat(q).n());
+                let a_n = [n.x.abs(), n.y.abs(), n.z.abs()];
+                let skip = (0..3).fold(0, |m, i| if a_n[i] > a_n[m] { i } else { m });
+                let mut want: Vec<f64> = (0..3).filter(|&i| i != skip).map(|i| u.at(i)).collect();
+                want.push(0.0);
                 let c = fx.con(K::SameOrientation, f).with_entities([a, b, 0, 0]);
-                Built::new(c, Break::Set(brk), Expect::Rows(vec![n.x, n.y, n.z]))
+                Built::new(c, Break::Set(brk), Expect::Rows(want))
             },
         },
         Case {
@@ -77,13 +83,17 @@ fn orientation_family_residuals_derivatives_and_solves() {
 }
 
 #[test]
-fn same_orientation_accepts_the_negated_quaternion_and_removes_three_freedoms() {
+fn same_orientation_accepts_the_negated_quaternion_and_quarter_turns_and_removes_three_freedoms() {
+    // SolveSpace's meaning: N axes parallel, and U of A perpendicular to V or to U of B.
     let mut fx = Fx::new();
     let (a, b, q) = same_pair(&mut fx, Free);
     let ps = fx.params(b);
     let negated: Vec<(u32, f64)> = ps.iter().zip(q).map(|(&p, v)| (p, -v)).collect();
+    let quarter = quat(q).times(quat(axis_angle([0.0, 0.0, 1.0], FRAC_PI_2)));
+    let quarter = [quarter.w, quarter.x, quarter.y, quarter.z];
+    let quarter: Vec<(u32, f64)> = ps.iter().zip(quarter).map(|(&p, v)| (p, v)).collect();
     let c = fx.con(K::SameOrientation, Free).with_entities([a, b, 0, 0]);
-    for values in [vec![], negated] {
+    for values in [vec![], negated, quarter] {
         fx.set(&values);
         let one = compile(&fx.sys, &c);
         let x = one.x(&fx.sys);

@@ -204,11 +204,12 @@ pub(super) fn cases() -> Vec<Case> {
             forms: ALL,
             build: |fx, f| {
                 let (a, b, dir, val) = if f == Free {
-                    // Along (2, 1, 2) / 3: 3, plus an offset perpendicular to it.
+                    // 3 along (2, 1, 2) / 3 plus an offset perpendicular to it; the line runs
+                    // the other way (a line's direction is start minus end), so -3.
                     let a = fx.p3(FIXED, [0.5, 0.0, 1.0]);
                     let b = fx.p3(MOVING, [3.5, -1.0, 3.0]);
                     let l = fx.line(FIXED, Free, [1.0, 1.0, 1.0], [3.0, 2.0, 3.0]);
-                    (a, b, l, 3.0)
+                    (a, b, l, -3.0)
                 } else {
                     // Along the normal of `wp2` (a 3D normal, or the 2D normal copying it).
                     // In the mixed form B is the 3D point: a point of `wp2` could not move
@@ -336,12 +337,15 @@ fn pt_plane_distance_is_signed_along_the_normal() {
 }
 
 #[test]
-fn proj_pt_distance_is_signed_from_a_to_b() {
+fn proj_pt_distance_is_signed_from_a_to_b_along_start_minus_end() {
+    // b - a = (3, -1, 2); the line from (1, 1, 1) to (3, 2, 3) points along -(2, 1, 2) / 3,
+    // as SolveSpace's line vectors do; reversing the line or the points flips the sign.
     let mut fx = Fx::new();
     let a = fx.p3(FIXED, [0.5, 0.0, 1.0]);
     let b = fx.p3(MOVING, [3.5, -1.0, 3.0]);
     let l = fx.line(FIXED, Free, [1.0, 1.0, 1.0], [3.0, 2.0, 3.0]);
-    for (pa, pb, val) in [(a, b, 3.0), (b, a, -3.0)] {
+    let back = fx.line(FIXED, Free, [3.0, 2.0, 3.0], [1.0, 1.0, 1.0]);
+    for (pa, pb, l, val) in [(a, b, l, -3.0), (b, a, l, 3.0), (a, b, back, 3.0)] {
         let c = fx.con(K::ProjPtDistance, Free).with_points(pa, pb);
         let one = compile(&fx.sys, &c.with_entities([l, 0, 0, 0]).with_val(val));
         let r = one.residuals(&one.x(&fx.sys));
