@@ -106,7 +106,8 @@ kinds! {
     PtPtDistance = "pt_pt_distance", 100001;
     /// Signed distance from `pt_a` to workplane `entity_a` is `val`.
     PtPlaneDistance = "pt_plane_distance", 100002;
-    /// Distance from `pt_a` to line `entity_a` is `val` (signed when projected).
+    /// Distance from `pt_a` to line `entity_a` is `val`: unsigned in 3D; when projected,
+    /// signed, positive to the right of the line's start→end (below a rightward line).
     PtLineDistance = "pt_line_distance", 100003;
     /// Signed distance from `pt_a` to the plane of face `entity_a` is `val`.
     PtFaceDistance = "pt_face_distance", 100004;
