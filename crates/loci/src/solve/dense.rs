@@ -18,7 +18,12 @@ pub(crate) struct DenseLdlt {
 
 impl DenseLdlt {
     pub fn new(n: usize) -> Self {
-        Self { n, a: vec![0.0; n * n], l: vec![0.0; n * n], dropped: vec![false; n] }
+        Self {
+            n,
+            a: vec![0.0; n * n],
+            l: vec![0.0; n * n],
+            dropped: vec![false; n],
+        }
     }
 
     /// Position of entry (i, j) in the storage (any order of i, j).
@@ -40,8 +45,11 @@ impl DenseLdlt {
         for k in 0..n {
             let mut d = self.a[k * n + k] + lambda;
             for j in 0..k {
-                let lkj = self.l[k * n + j];
-                d -= lkj * lkj * self.l[j * n + j];
+                // A dropped row contributes nothing (its column of L is zero).
+                if !self.dropped[j] {
+                    let lkj = self.l[k * n + j];
+                    d -= lkj * lkj * self.l[j * n + j];
+                }
             }
             if !d.is_finite() {
                 return false;
@@ -59,7 +67,9 @@ impl DenseLdlt {
             for i in k + 1..n {
                 let mut v = self.a[i * n + k];
                 for j in 0..k {
-                    v -= self.l[i * n + j] * self.l[k * n + j] * self.l[j * n + j];
+                    if !self.dropped[j] {
+                        v -= self.l[i * n + j] * self.l[k * n + j] * self.l[j * n + j];
+                    }
                 }
                 self.l[i * n + k] = v / d;
             }
@@ -82,7 +92,11 @@ impl DenseLdlt {
             b[i] = v;
         }
         for i in 0..n {
-            b[i] = if self.dropped[i] { 0.0 } else { b[i] / self.l[i * n + i] };
+            b[i] = if self.dropped[i] {
+                0.0
+            } else {
+                b[i] / self.l[i * n + i]
+            };
         }
         for i in (0..n).rev() {
             let mut v = b[i];
@@ -97,6 +111,23 @@ impl DenseLdlt {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn two_dropped_rows_leave_the_rest_finite() {
+        // Three identical rows: the second and third depend on the first.
+        let mut g = DenseLdlt::new(3);
+        for a in 0..3 {
+            for b in 0..=a {
+                let idx = g.index(a, b);
+                g.values_mut()[idx] = 1.0;
+            }
+        }
+        assert!(g.factor(0.0, 1e-10));
+        assert_eq!(g.dropped(), vec![1, 2]);
+        let mut y = [4.0, 4.0, 4.0];
+        g.solve(&mut y);
+        assert_eq!(y, [4.0, 0.0, 0.0]);
+    }
 
     #[test]
     fn solves_and_drops_a_dependent_row() {
