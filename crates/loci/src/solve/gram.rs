@@ -34,6 +34,8 @@ pub(crate) struct Gram {
     l_values: Vec<f64>,
     signs: Vec<i8>,
     mem: MemBuffer,
+    /// Index into `vals` of each diagonal entry (the last entry of its upper-triangle column).
+    diag: Vec<u32>,
 }
 
 impl Gram {
@@ -84,6 +86,7 @@ impl Gram {
             col_ptr[c + 1] = row_idx.len();
         }
         let nnz = row_idx.len();
+        let diag: Vec<u32> = col_ptr[1..].iter().map(|&end| (end - 1) as u32).collect();
         let pattern = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);
         let symbolic = factorize_symbolic_cholesky(
             pattern.as_ref(),
@@ -110,15 +113,25 @@ impl Gram {
             l_values,
             signs: vec![1; nrows],
             mem,
+            diag,
         })
     }
 
     /// Factorises `G` for the Jacobian values `jv`; pivots at or below `eps` are dropped.
     /// Returns false when the factorisation failed numerically.
     pub fn factor(&mut self, jv: &[f64], eps: f64) -> bool {
+        self.factor_damped(jv, eps, 0.0)
+    }
+
+    /// Factorises `G + damping I`: the Levenberg–Marquardt system in the row space, whose
+    /// step `Jᵀ y` shortens towards steepest descent as `damping` grows.
+    pub fn factor_damped(&mut self, jv: &[f64], eps: f64, damping: f64) -> bool {
         self.vals.iter_mut().for_each(|v| *v = 0.0);
         for &(e, a, b) in &self.contrib {
             self.vals[e as usize] += jv[a as usize] * jv[b as usize];
+        }
+        for &d in &self.diag {
+            self.vals[d as usize] += damping;
         }
         let a = SparseColMatRef::new(self.pattern.as_ref(), &self.vals);
         let reg = LdltRegularization {

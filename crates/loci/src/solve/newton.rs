@@ -180,6 +180,8 @@ impl Component {
         if self.gram.is_none() {
             self.gram = Gram::new(m, &self.columns);
         }
+        // Out of `self` while solving, so the residual methods can borrow `self` meanwhile.
+        let mut gram_slot = self.gram.take();
         let mut r = vec![0.0; m];
         let mut jv = vec![0.0; self.nnz];
         let mut jn = vec![0.0; self.nnz];
@@ -192,6 +194,8 @@ impl Component {
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
+        // Levenberg–Marquardt damping, once plain Newton steps stop reducing the residual.
+        let mut damping: Option<f64> = None;
         loop {
             self.jacobian(kernels, x, values, &mut r, &mut jv, &mut xs, &mut jl);
             // Normalise rows of J S so the pivots of G measure independence, not units.
@@ -212,7 +216,7 @@ impl Component {
                     jn[idx as usize] *= inv[row as usize];
                 }
             }
-            let Some(gram) = self.gram.as_mut() else {
+            let Some(gram) = gram_slot.as_mut() else {
                 break;
             };
             factored = gram.factor(&jn, cfg.rank_tolerance);
@@ -225,19 +229,20 @@ impl Component {
                 break;
             }
             iterations += 1;
-            for i in 0..m {
-                y[i] = -r[i] * inv[i];
-            }
-            gram.solve(&mut y);
-            dx.iter_mut().for_each(|v| *v = 0.0);
-            for (c, col) in self.columns.iter().enumerate() {
-                let mut acc = 0.0;
-                for &(row, idx) in col {
-                    acc += jn[idx as usize] * y[row as usize];
+            let step = |gram: &mut Gram, y: &mut [f64], dx: &mut [f64]| {
+                for i in 0..m {
+                    y[i] = -r[i] * inv[i];
                 }
-                dx[c] = acc * self.scale[c];
-            }
-            // Backtracking on the normalised residual, the quantity the step minimises.
+                gram.solve(y);
+                for (c, col) in self.columns.iter().enumerate() {
+                    let mut acc = 0.0;
+                    for &(row, idx) in col {
+                        acc += jn[idx as usize] * y[row as usize];
+                    }
+                    dx[c] = acc * self.scale[c];
+                }
+            };
+            // The normalised residual, the quantity the step minimises.
             let merit = |r: &[f64]| {
                 r.iter()
                     .zip(&inv)
@@ -245,22 +250,52 @@ impl Component {
                     .sum::<f64>()
             };
             let m0 = merit(&r);
-            let mut alpha = 1.0;
             let mut accepted = false;
-            for _ in 0..20 {
-                for c in 0..ncols {
-                    xt[c] = x[c] + alpha * dx[c];
+            if damping.is_none() {
+                // Newton step with backtracking.
+                step(gram, &mut y, &mut dx);
+                let mut alpha = 1.0;
+                for _ in 0..20 {
+                    for c in 0..ncols {
+                        xt[c] = x[c] + alpha * dx[c];
+                    }
+                    self.residuals(kernels, &xt, values, &mut rt, &mut xs);
+                    let mt = merit(&rt);
+                    if mt.is_finite() && (mt < m0 || mt == 0.0) {
+                        accepted = true;
+                        break;
+                    }
+                    alpha *= 0.5;
                 }
-                self.residuals(kernels, &xt, values, &mut rt, &mut xs);
-                let mt = merit(&rt);
-                if mt.is_finite() && (mt < m0 || mt == 0.0) {
-                    accepted = true;
-                    break;
-                }
-                alpha *= 0.5;
             }
             if !accepted {
-                break;
+                // Backtracking stalls where the Jacobian is nearly singular, typically on
+                // the way to the least-squares point of constraints that cannot all hold.
+                // Damped steps keep descending to that point, where the rank test below can
+                // name the conflict; they also rescue consistent problems from a bad start.
+                // Adaptive damping as in Nocedal & Wright, "Numerical Optimization", 10.3.
+                let mut lambda = damping.unwrap_or(1e-6);
+                while lambda < 1e12 {
+                    if gram.factor_damped(&jn, cfg.rank_tolerance, lambda) {
+                        step(gram, &mut y, &mut dx);
+                        for c in 0..ncols {
+                            xt[c] = x[c] + dx[c];
+                        }
+                        self.residuals(kernels, &xt, values, &mut rt, &mut xs);
+                        let mt = merit(&rt);
+                        if mt.is_finite() && (mt < m0 || mt == 0.0) {
+                            accepted = true;
+                            break;
+                        }
+                    }
+                    lambda *= 10.0;
+                }
+                damping = Some((lambda / 10.0).max(1e-12));
+                if !accepted {
+                    // Leave the undamped factorisation for the rank test.
+                    factored = gram.factor(&jn, cfg.rank_tolerance);
+                    break;
+                }
             }
             x.copy_from_slice(&xt);
         }
@@ -273,7 +308,7 @@ impl Component {
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
         };
         fin.unsatisfied = (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect();
-        if let (Some(gram), true) = (self.gram.as_mut(), factored) {
+        if let (Some(gram), true) = (gram_slot.as_mut(), factored) {
             fin.dropped = gram.dropped();
             if cfg.find_failed {
                 for &k in &fin.dropped {
@@ -285,6 +320,7 @@ impl Component {
             // No factorisation: count every row as unresolved.
             fin.dropped = (0..m).collect();
         }
+        self.gram = gram_slot;
         fin
     }
 }
