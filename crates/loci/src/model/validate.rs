@@ -6,13 +6,24 @@ use super::{
 use crate::error::ModelError;
 
 impl System {
-    /// Checks every reference in the model: parameters and entities exist, each has the type
-    /// its field needs, 2D entities name a workplane, and constraints have the fields their
-    /// type uses.
+    /// Checks every value and reference in the model: parameter and constraint values are
+    /// finite, parameters and entities exist, each has the type its field needs, 2D entities
+    /// name a workplane, and constraints have the fields their type uses.
     ///
     /// # Errors
     /// The first problem found, naming the object and field.
     pub fn validate(&self) -> Result<(), ModelError> {
+        // `add_param` rejects non-finite values, but `set_value` and `params_mut` can still
+        // store one, and a NaN would silently poison every equation that reads it.
+        for p in self.params() {
+            if !p.val.is_finite() {
+                return Err(ModelError::NonFinite {
+                    owner: ObjectId::Param(p.h),
+                    field: "val",
+                    value: p.val,
+                });
+            }
+        }
         for e in self.entities() {
             self.validate_entity(e.h)?;
         }
