@@ -122,8 +122,17 @@ pub(crate) fn resolve_constraint(
             kind: c.kind,
         });
     }
+    // Fields the type does not use are ignored, as validation ignores them (and libslvs
+    // never reads them): a stray handle there must not fail the solve.
+    let point_form =
+        matches!(c.kind, ConstraintKind::Horizontal | ConstraintKind::Vertical)
+            && c.entity_a.is_none();
+    let used = |i: usize| sig.fields[i].is_some() || (point_form && i < 2);
     let mut pts = [None, None];
-    for (slot, h) in pts.iter_mut().zip([c.pt_a, c.pt_b]) {
+    for (i, (slot, h)) in pts.iter_mut().zip([c.pt_a, c.pt_b]).enumerate() {
+        if !used(i) {
+            continue;
+        }
         if let Some(h) = h {
             match r.entity(owner, h, &mut l)? {
                 Ent::Point(p) => *slot = Some(p),
@@ -138,11 +147,13 @@ pub(crate) fn resolve_constraint(
         }
     }
     let mut ents = Vec::new();
-    for h in [c.entity_a, c.entity_b, c.entity_c, c.entity_d]
+    for (i, h) in [c.entity_a, c.entity_b, c.entity_c, c.entity_d]
         .into_iter()
-        .flatten()
+        .enumerate()
     {
-        ents.push(r.entity(owner, h, &mut l)?);
+        if let (Some(h), true) = (h, used(i + 2) && !point_form) {
+            ents.push(r.entity(owner, h, &mut l)?);
+        }
     }
     let eq = Equation {
         kind: EqKind::Constraint(c.kind),
