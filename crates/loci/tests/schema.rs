@@ -171,3 +171,14 @@ fn schema_rejects_what_loci_rejects() {
     });
     assert!(v.is_valid(&ok), "{:#?}", errors(&v, &ok));
 }
+
+#[test]
+fn the_format_doc_shows_the_shipped_example_verbatim() {
+    let doc = std::fs::read_to_string(root().join("docs/format.md")).unwrap();
+    let example = std::fs::read_to_string(root().join("examples/two_points.json")).unwrap();
+    assert!(doc.contains(example.trim()), "docs/format.md and examples/two_points.json differ");
+    // Every type the library knows is documented in the table.
+    for &kind in loci::ConstraintKind::ALL {
+        assert!(doc.contains(&format!("| `{}` | {} |", kind.name(), kind.slvs_code())), "{kind}");
+    }
+}
