@@ -41,7 +41,7 @@ pub(crate) fn compile_group(
     group: GroupId,
     values: &[f64],
 ) -> Result<Vec<Compiled>, ModelError> {
-    let r = Resolver { sys };
+    let r = Resolver::new(sys);
     let mut out = Vec::new();
     let mut x = Vec::new();
     for c in sys.constraints() {

@@ -195,50 +195,78 @@ impl Equation {
         r.n
     }
 
-    /// Residuals and the dense Jacobian (row-major, `rows x x.len()`), exactly, by forward
-    /// differentiation in chunks of at most 16 directions.
+    /// Residuals and the dense Jacobian with respect to every local slot (row-major,
+    /// `rows x x.len()`).
+    #[cfg_attr(not(test), allow(dead_code))]
     pub fn jacobian(&self, x: &[f64], res: &mut [f64], jac: &mut [f64]) {
-        let n = x.len();
-        if n <= 4 {
-            self.jacobian_chunk::<4>(x, 0, res, jac);
-        } else if n <= 8 {
-            self.jacobian_chunk::<8>(x, 0, res, jac);
-        } else {
-            let mut start = 0;
-            while start < n {
-                self.jacobian_chunk::<16>(x, start, res, jac);
-                start += 16;
+        let all: Vec<u16> = (0..x.len() as u16).collect();
+        self.jacobian_active(x, &all, res, jac);
+    }
+
+    /// Residuals and the dense Jacobian with respect to the slots in `active` only
+    /// (row-major, `rows x active.len()`); the other slots are constants.
+    ///
+    /// Derivatives are exact, by forward differentiation: one pass with `N >= active.len()`
+    /// directions for up to 16 unknowns, or passes of 16 directions each beyond that.
+    pub fn jacobian_active(&self, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f64]) {
+        match (x.len(), active.len()) {
+            (0..=8, 0..=4) => self.pass::<4, 8>(x, active, 0, res, jac),
+            (0..=8, _) => self.pass::<8, 8>(x, active, 0, res, jac),
+            (9..=16, 0..=4) => self.pass::<4, 16>(x, active, 0, res, jac),
+            (9..=16, 5..=8) => self.pass::<8, 16>(x, active, 0, res, jac),
+            (9..=16, _) => self.pass::<16, 16>(x, active, 0, res, jac),
+            (9..=32, 0..=8) => self.pass::<8, 32>(x, active, 0, res, jac),
+            (9..=32, _) => {
+                let mut start = 0;
+                while start < active.len() {
+                    self.pass::<16, 32>(x, active, start, res, jac);
+                    start += 16;
+                }
+            }
+            _ => {
+                let mut start = 0;
+                while start < active.len() {
+                    self.pass_heap::<16>(x, active, start, res, jac);
+                    start += 16;
+                }
             }
         }
     }
 
-    fn jacobian_chunk<const N: usize>(
+    /// One pass over directions `start..start + N` of `active`, with up to `M` slots on the stack.
+    fn pass<const N: usize, const M: usize>(
         &self,
         x: &[f64],
+        active: &[u16],
         start: usize,
         res: &mut [f64],
         jac: &mut [f64],
     ) {
-        let n = x.len();
-        let mut xd = [Dual::<N>::cst(0.0); 64];
-        let mut heap;
-        let xs: &mut [Dual<N>] = if n <= 64 {
-            &mut xd[..n]
-        } else {
-            heap = vec![Dual::<N>::cst(0.0); n];
-            &mut heap
-        };
-        for (i, (d, &v)) in xs.iter_mut().zip(x).enumerate() {
-            *d = Dual::var(v, i.wrapping_sub(start));
+        let mut xs = [Dual::<N>::cst(0.0); M];
+        for (d, &v) in xs.iter_mut().zip(x) {
+            *d = Dual::cst(v);
         }
+        for (k, &s) in active.iter().enumerate().skip(start).take(N) {
+            xs[s as usize] = Dual::var(x[s as usize], k - start);
+        }
+        self.scatter(&xs[..x.len()], active.len(), start, res, jac);
+    }
+
+    fn pass_heap<const N: usize>(&self, x: &[f64], active: &[u16], start: usize, res: &mut [f64], jac: &mut [f64]) {
+        let mut xs: Vec<Dual<N>> = x.iter().map(|&v| Dual::cst(v)).collect();
+        for (k, &s) in active.iter().enumerate().skip(start).take(N) {
+            xs[s as usize] = Dual::var(x[s as usize], k - start);
+        }
+        self.scatter(&xs, active.len(), start, res, jac);
+    }
+
+    fn scatter<const N: usize>(&self, xs: &[Dual<N>], na: usize, start: usize, res: &mut [f64], jac: &mut [f64]) {
         let mut out = Rows::new();
         self.eval(xs, &mut out);
+        let width = N.min(na - start.min(na));
         for r in 0..out.n {
             res[r] = out.v[r].v;
-            let row = &mut jac[r * n..(r + 1) * n];
-            for k in 0..N.min(n.saturating_sub(start)) {
-                row[start + k] = out.v[r].d[k];
-            }
+            jac[r * na + start..r * na + start + width].copy_from_slice(&out.v[r].d[..width]);
         }
     }
 }

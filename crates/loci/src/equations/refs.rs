@@ -64,9 +64,25 @@ impl Locals {
 /// Resolves entity handles into slot-based references.
 pub(crate) struct Resolver<'a> {
     pub sys: &'a System,
+    /// Workplanes already resolved: their origin and quaternion parameters (positions in
+    /// [`System::params`]). Every 2D point refers to its workplane, so this is hot.
+    frames: std::cell::RefCell<rustc_hash::FxHashMap<EntityId, [u32; 7]>>,
 }
 
-impl Resolver<'_> {
+impl<'a> Resolver<'a> {
+    pub fn new(sys: &'a System) -> Self {
+        Self { sys, frames: Default::default() }
+    }
+
+    fn cached_frame(&self, h: EntityId, l: &mut Locals) -> Option<Frame> {
+        let g = *self.frames.borrow().get(&h)?;
+        let mut s = [0; 7];
+        for (o, p) in s.iter_mut().zip(g) {
+            *o = l.slot(p as usize);
+        }
+        Some(Frame { id: h, origin: [s[0], s[1], s[2]], q: [s[3], s[4], s[5], s[6]] })
+    }
+
     fn param(
         &self,
         owner: EntityId,
@@ -118,6 +134,9 @@ impl Resolver<'_> {
     ) -> Result<Ent, ModelError> {
         if depth > 4 {
             return Err(ModelError::Cycle { entity: h });
+        }
+        if let Some(f) = self.cached_frame(h, l) {
+            return Ok(Ent::Workplane(f));
         }
         let e = self.sys.entity(h).ok_or_else(|| Self::dangling(owner, h))?;
         let me = ObjectId::Entity(h);

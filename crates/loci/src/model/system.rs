@@ -3,7 +3,7 @@
 use super::{Constraint, ConstraintId, Entity, EntityId, ObjectId, Param, ParamId};
 use crate::error::ModelError;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 /// A whole problem: parameters, entities and constraints, kept in the order they were added.
 ///

@@ -20,11 +20,160 @@ use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 
+use super::dense::DenseLdlt;
+
 /// The value a dropped pivot is replaced by.
 const DROPPED: f64 = 1e150;
 
-/// `G = J Jᵀ` for one component, with its factorisation.
-pub(crate) struct Gram {
+/// The structure of `G = J Jᵀ`: an upper-triangular CSC pattern, and for every product of two
+/// Jacobian entries the entry of `G` it adds to.
+struct Pattern {
+    col_ptr: Vec<usize>,
+    row_idx: Vec<usize>,
+    /// `(entry of G, entry of J, entry of J)`: `G[e] += J[a] * J[b]`.
+    contrib: Vec<(u32, u32, u32)>,
+}
+
+impl Pattern {
+    /// From the nonzeros of `J`, given column by column as `(row, index into J's values)`.
+    fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Self {
+        // Rows of J with their columns: row i -> [(column, index into J's values)].
+        let mut row_ptr = vec![0usize; nrows + 1];
+        for col in columns {
+            for &(r, _) in col {
+                row_ptr[r as usize + 1] += 1;
+            }
+        }
+        for i in 0..nrows {
+            row_ptr[i + 1] += row_ptr[i];
+        }
+        let mut fill = row_ptr.clone();
+        let mut row_entries = vec![(0u32, 0u32); row_ptr[nrows]];
+        for (c, col) in columns.iter().enumerate() {
+            for &(r, a) in col {
+                row_entries[fill[r as usize]] = (c as u32, a);
+                fill[r as usize] += 1;
+            }
+        }
+        // Column i of the upper triangle of G holds the rows j <= i that share a column of J
+        // with row i; the diagonal (j = i) comes last. A marker array avoids sorting G.
+        let mut col_ptr = vec![0usize; nrows + 1];
+        let mut row_idx: Vec<usize> = Vec::new();
+        let mut contrib = Vec::new();
+        let mut slot_of = vec![usize::MAX; nrows];
+        let mut touched: Vec<usize> = Vec::new();
+        let mut pending: Vec<(u32, u32, u32)> = Vec::new(); // (row j, a, b)
+        for i in 0..nrows {
+            touched.clear();
+            pending.clear();
+            for &(c, b) in &row_entries[row_ptr[i]..row_ptr[i + 1]] {
+                for &(j, a) in &columns[c as usize] {
+                    if j as usize <= i {
+                        if slot_of[j as usize] == usize::MAX {
+                            slot_of[j as usize] = 0;
+                            touched.push(j as usize);
+                        }
+                        pending.push((j, a, b));
+                    }
+                }
+            }
+            // An empty Jacobian row still gets its diagonal: a zero pivot, a dropped equation.
+            if slot_of[i] == usize::MAX {
+                slot_of[i] = 0;
+                touched.push(i);
+            }
+            touched.sort_unstable();
+            let start = row_idx.len();
+            for (k, &j) in touched.iter().enumerate() {
+                slot_of[j] = start + k;
+                row_idx.push(j);
+            }
+            for &(j, a, b) in &pending {
+                contrib.push((slot_of[j as usize] as u32, a, b));
+            }
+            for &j in &touched {
+                slot_of[j] = usize::MAX;
+            }
+            col_ptr[i + 1] = row_idx.len();
+        }
+        Self { col_ptr, row_idx, contrib }
+    }
+}
+
+/// Components up to this many equations use the dense factorisation.
+const DENSE_MAX: usize = 24;
+
+/// `G = J Jᵀ` of one component and its rank-revealing factorisation, dense or sparse by size.
+pub(crate) enum Gram {
+    Dense { g: DenseLdlt, contrib: Vec<(u32, u32, u32)> },
+    Sparse(SparseGram),
+}
+
+impl Gram {
+    /// Builds the structure from the nonzeros of `J`, given column by column as lists of
+    /// `(row, index into J's values)`.
+    pub fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Option<Self> {
+        let p = Pattern::new(nrows, columns);
+        if nrows <= DENSE_MAX {
+            let g = DenseLdlt::new(nrows);
+            let mut col_of = vec![0usize; p.row_idx.len()];
+            for c in 0..nrows {
+                for e in p.col_ptr[c]..p.col_ptr[c + 1] {
+                    col_of[e] = c;
+                }
+            }
+            let contrib = p
+                .contrib
+                .iter()
+                .map(|&(e, a, b)| (g.index(p.row_idx[e as usize], col_of[e as usize]) as u32, a, b))
+                .collect();
+            return Some(Gram::Dense { g, contrib });
+        }
+        SparseGram::new(nrows, p).map(Gram::Sparse)
+    }
+
+    /// Computes `G` from the Jacobian values `jv`.
+    pub fn assemble(&mut self, jv: &[f64]) {
+        match self {
+            Gram::Dense { g, contrib } => {
+                let v = g.values_mut();
+                v.iter_mut().for_each(|x| *x = 0.0);
+                for &(e, a, b) in contrib.iter() {
+                    v[e as usize] += jv[a as usize] * jv[b as usize];
+                }
+            }
+            Gram::Sparse(s) => s.assemble(jv),
+        }
+    }
+
+    /// Factorises `G + lambda I`; pivots at or below `eps` are dropped. Returns false when the
+    /// factorisation failed numerically.
+    pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
+        match self {
+            Gram::Dense { g, .. } => g.factor(lambda, eps),
+            Gram::Sparse(s) => s.factor(lambda, eps),
+        }
+    }
+
+    /// The rows whose pivots were dropped in the last factorisation, ascending.
+    pub fn dropped(&self) -> Vec<usize> {
+        match self {
+            Gram::Dense { g, .. } => g.dropped(),
+            Gram::Sparse(s) => s.dropped(),
+        }
+    }
+
+    /// Solves `G y = rhs` in place with the last factorisation.
+    pub fn solve(&mut self, rhs: &mut [f64]) {
+        match self {
+            Gram::Dense { g, .. } => g.solve(rhs),
+            Gram::Sparse(s) => s.solve(rhs),
+        }
+    }
+}
+
+/// `G = J Jᵀ` for one component, with its sparse factorisation.
+pub(crate) struct SparseGram {
     n: usize,
     pattern: SymbolicSparseColMat<usize>,
     vals: Vec<f64>,
@@ -33,60 +182,17 @@ pub(crate) struct Gram {
     symbolic: SymbolicCholesky<usize>,
     l_values: Vec<f64>,
     signs: Vec<i8>,
+    shifted: Vec<f64>,
+    /// Position of each diagonal entry in `vals`: the last of its column (rows are sorted).
+    diag: Vec<usize>,
     mem: MemBuffer,
-    /// Index into `vals` of each diagonal entry (the last entry of its upper-triangle column).
-    diag: Vec<u32>,
 }
 
-impl Gram {
-    /// Builds the structure from the nonzeros of `J`, given column by column as lists of
-    /// `(row, index into J's values)`.
-    pub fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Option<Self> {
-        // Upper-triangle pattern: for every column, every pair of rows in it.
-        let mut pairs: Vec<(u32, u32, u32, u32)> = Vec::new(); // (col of G, row of G, a, b)
-        for col in columns {
-            for (i, &(ri, ai)) in col.iter().enumerate() {
-                for &(rj, aj) in &col[i..] {
-                    let (lo, hi, a, b) = if ri <= rj {
-                        (ri, rj, ai, aj)
-                    } else {
-                        (rj, ri, aj, ai)
-                    };
-                    pairs.push((hi, lo, a, b));
-                }
-            }
-        }
-        // Every row has a diagonal even if its Jacobian row is empty.
-        let mut diag_seen = vec![false; nrows];
-        for p in &pairs {
-            if p.0 == p.1 {
-                diag_seen[p.0 as usize] = true;
-            }
-        }
-        pairs.sort_unstable();
-        let mut col_ptr = vec![0usize; nrows + 1];
-        let mut row_idx = Vec::new();
-        let mut contrib = Vec::with_capacity(pairs.len());
-        let mut k = 0;
-        for c in 0..nrows {
-            let start = row_idx.len();
-            while k < pairs.len() && pairs[k].0 as usize == c {
-                let r = pairs[k].1 as usize;
-                if row_idx.len() == start || *row_idx.last().unwrap_or(&usize::MAX) != r {
-                    row_idx.push(r);
-                }
-                contrib.push(((row_idx.len() - 1) as u32, pairs[k].2, pairs[k].3));
-                k += 1;
-            }
-            if !diag_seen[c] {
-                // An empty Jacobian row: a lone diagonal entry (the largest row index in its
-                // column), which will be a zero pivot and so a dropped equation.
-                row_idx.push(c);
-            }
-            col_ptr[c + 1] = row_idx.len();
-        }
+impl SparseGram {
+    fn new(nrows: usize, pattern: Pattern) -> Option<Self> {
+        let Pattern { col_ptr, row_idx, contrib } = pattern;
         let nnz = row_idx.len();
-        let diag: Vec<u32> = col_ptr[1..].iter().map(|&end| (end - 1) as u32).collect();
+        let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();
         let pattern = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);
         let symbolic = factorize_symbolic_cholesky(
             pattern.as_ref(),
@@ -112,27 +218,38 @@ impl Gram {
             symbolic,
             l_values,
             signs: vec![1; nrows],
-            mem,
+            shifted: vec![0.0; nrows],
             diag,
+            mem,
         })
     }
 
-    /// Factorises `G` for the Jacobian values `jv`; pivots at or below `eps` are dropped.
-    /// Returns false when the factorisation failed numerically.
-    pub fn factor(&mut self, jv: &[f64], eps: f64) -> bool {
-        self.factor_damped(jv, eps, 0.0)
-    }
-
-    /// Factorises `G + damping I`: the Levenberg–Marquardt system in the row space, whose
-    /// step `Jᵀ y` shortens towards steepest descent as `damping` grows.
-    pub fn factor_damped(&mut self, jv: &[f64], eps: f64, damping: f64) -> bool {
+    /// Computes `G` from the Jacobian values `jv`.
+    pub fn assemble(&mut self, jv: &[f64]) {
         self.vals.iter_mut().for_each(|v| *v = 0.0);
         for &(e, a, b) in &self.contrib {
             self.vals[e as usize] += jv[a as usize] * jv[b as usize];
         }
-        for &d in &self.diag {
-            self.vals[d as usize] += damping;
+    }
+
+    /// Factorises `G + lambda I` (with `G` from the last [`Gram::assemble`]); pivots at or
+    /// below `eps` are dropped. Returns false when the factorisation failed numerically.
+    pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
+        if lambda == 0.0 {
+            return self.factor_current(eps);
         }
+        for (c, &d) in self.diag.iter().enumerate() {
+            self.shifted[c] = self.vals[d];
+            self.vals[d] += lambda;
+        }
+        let ok = self.factor_current(eps);
+        for (c, &d) in self.diag.iter().enumerate() {
+            self.vals[d] = self.shifted[c];
+        }
+        ok
+    }
+
+    fn factor_current(&mut self, eps: f64) -> bool {
         let a = SparseColMatRef::new(self.pattern.as_ref(), &self.vals);
         let reg = LdltRegularization {
             dynamic_regularization_signs: Some(&self.signs),

@@ -17,6 +17,9 @@ pub(crate) struct Block {
     pub cols: Vec<u32>,
     /// For each local slot: its position in `cols`, or -1 for a constant.
     pub slot_col: Vec<i32>,
+    /// The slots that are unknowns, and the position in `cols` of each.
+    pub active: Vec<u16>,
+    pub active_col: Vec<u32>,
 }
 
 /// How one component ended.
@@ -31,6 +34,24 @@ pub(crate) struct Finish {
     pub unsatisfied: Vec<usize>,
     pub residual: f64,
 }
+
+/// Work vectors reused across components, so that many small components cost no allocations.
+#[derive(Default)]
+pub(crate) struct Scratch {
+    r: Vec<f64>,
+    jv: Vec<f64>,
+    jn: Vec<f64>,
+    inv: Vec<f64>,
+    y: Vec<f64>,
+    dx: Vec<f64>,
+    xt: Vec<f64>,
+    rt: Vec<f64>,
+    xs: Vec<f64>,
+    jl: Vec<f64>,
+}
+
+/// How many past merits the line search compares a step with.
+const NONMONOTONE: usize = 4;
 
 /// A component ready to solve repeatedly.
 pub(crate) struct Component {
@@ -84,13 +105,9 @@ impl Component {
                 row_block.push((bi as u32, r as u8));
             }
             let n = cols.len();
-            blocks.push(Block {
-                kernel: k,
-                row0: row,
-                jv0: jv,
-                cols,
-                slot_col,
-            });
+            let active: Vec<u16> = (0..slot_col.len() as u16).filter(|&s| slot_col[s as usize] >= 0).collect();
+            let active_col = active.iter().map(|&s| slot_col[s as usize] as u32).collect();
+            blocks.push(Block { kernel: k, row0: row, jv0: jv, cols, slot_col, active, active_col });
             row += kern.rows;
             jv += kern.rows * n;
         }
@@ -149,18 +166,25 @@ impl Component {
         for b in &self.blocks {
             let k = &kernels[b.kernel];
             self.gather(b, k, x, values, xs);
-            let n = xs.len();
+            let na = b.active.len();
             jl.clear();
-            jl.resize(k.rows * n, 0.0);
-            k.eq.jacobian(xs, &mut r[b.row0..b.row0 + k.rows], jl);
+            jl.resize(k.rows * na, 0.0);
+            k.eq.jacobian_active(xs, &b.active, &mut r[b.row0..b.row0 + k.rows], jl);
             let w = b.cols.len();
             let block = &mut jv[b.jv0..b.jv0 + k.rows * w];
-            block.iter_mut().for_each(|v| *v = 0.0);
-            for row in 0..k.rows {
-                for s in 0..n {
-                    let c = b.slot_col[s];
-                    if c >= 0 {
-                        block[row * w + c as usize] += jl[row * n + s];
+            if na == w {
+                // Every unknown appears once: the block is the Jacobian as computed.
+                for row in 0..k.rows {
+                    for (a, &c) in b.active_col.iter().enumerate() {
+                        block[row * w + c as usize] = jl[row * na + a];
+                    }
+                }
+            } else {
+                // Merged parameters: several slots feed one column.
+                block.iter_mut().for_each(|v| *v = 0.0);
+                for row in 0..k.rows {
+                    for (a, &c) in b.active_col.iter().enumerate() {
+                        block[row * w + c as usize] += jl[row * na + a];
                     }
                 }
             }
@@ -174,30 +198,38 @@ impl Component {
         x: &mut [f64],
         values: &[f64],
         cfg: &Config,
+        scratch: &mut Scratch,
     ) -> Finish {
         let m = self.rows;
         let ncols = x.len();
         if self.gram.is_none() {
             self.gram = Gram::new(m, &self.columns);
         }
-        // Out of `self` while solving, so the residual methods can borrow `self` meanwhile.
         let mut gram_slot = self.gram.take();
-        let mut r = vec![0.0; m];
-        let mut jv = vec![0.0; self.nnz];
-        let mut jn = vec![0.0; self.nnz];
-        let mut inv = vec![0.0; m];
-        let mut y = vec![0.0; m];
-        let mut dx = vec![0.0; ncols];
-        let mut xt = vec![0.0; ncols];
-        let mut rt = vec![0.0; m];
-        let (mut xs, mut jl) = (Vec::new(), Vec::new());
+        let Scratch { r, jv, jn, inv, y, dx, xt, rt, xs, jl } = scratch;
+        for (v, n) in [(&mut *r, m), (&mut *jv, self.nnz), (&mut *jn, self.nnz), (&mut *inv, m), (&mut *y, m)] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        for (v, n) in [(&mut *dx, ncols), (&mut *xt, ncols), (&mut *rt, m)] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        let (r, jv, jn, inv, y, dx, xt, rt) =
+            (&mut r[..], &mut jv[..], &mut jn[..], &mut inv[..], &mut y[..], &mut dx[..], &mut xt[..], &mut rt[..]);
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
-        // Levenberg–Marquardt damping, once plain Newton steps stop reducing the residual.
+        let merit = |r: &[f64], inv: &[f64]| r.iter().zip(inv).map(|(a, b)| (a * b) * (a * b)).sum::<f64>();
+        // Step length of the last accepted step: the next line search starts at twice it, so a
+        // problem that needs short steps (a long chain turning far) does not pay for failed
+        // full steps every iteration.
+        let mut alpha_prev = 1.0f64;
+        // Levenberg-Marquardt damping, once plain Newton steps stop reducing the residual.
         let mut damping: Option<f64> = None;
+        let mut history: Vec<f64> = Vec::new();
         loop {
-            self.jacobian(kernels, x, values, &mut r, &mut jv, &mut xs, &mut jl);
+            self.jacobian(kernels, x, values, r, jv, xs, jl);
             // Normalise rows of J S so the pivots of G measure independence, not units.
             inv.iter_mut().for_each(|v| *v = 0.0);
             for (c, col) in self.columns.iter().enumerate() {
@@ -208,7 +240,7 @@ impl Component {
                     inv[row as usize] += v * v;
                 }
             }
-            for v in &mut inv {
+            for v in inv.iter_mut() {
                 *v = if *v > 0.0 { 1.0 / v.sqrt() } else { 0.0 };
             }
             for col in &self.columns {
@@ -216,10 +248,9 @@ impl Component {
                     jn[idx as usize] *= inv[row as usize];
                 }
             }
-            let Some(gram) = gram_slot.as_mut() else {
-                break;
-            };
-            factored = gram.factor(&jn, cfg.rank_tolerance);
+            let Some(gram) = gram_slot.as_mut() else { break };
+            gram.assemble(&jn);
+            factored = gram.factor(0.0, cfg.rank_tolerance);
             let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
             if max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite()) {
                 converged = true;
@@ -243,25 +274,25 @@ impl Component {
                 }
             };
             // The normalised residual, the quantity the step minimises.
-            let merit = |r: &[f64]| {
-                r.iter()
-                    .zip(&inv)
-                    .map(|(a, b)| (a * b) * (a * b))
-                    .sum::<f64>()
-            };
-            let m0 = merit(&r);
+            let m0 = merit(&r, &inv);
+            // Non-monotone acceptance (Grippo, Lampariello and Lucidi, 1986): a step may raise the
+            // merit above the current one as long as it stays below the largest of the last few,
+            // and below ten times the current one. Long chains that must swing far take fewer,
+            // longer steps this way (24 -> 18 iterations on 10,000 segments).
+            history.push(m0);
+            let m_ref = history.iter().rev().take(NONMONOTONE).fold(0.0f64, |a, &b| a.max(b));
+            let mut alpha = (2.0 * alpha_prev).min(1.0);
             let mut accepted = false;
             if damping.is_none() {
                 // Newton step with backtracking.
-                step(gram, &mut y, &mut dx);
-                let mut alpha = 1.0;
-                for _ in 0..20 {
+                step(gram, y, dx);
+                for _ in 0..30 {
                     for c in 0..ncols {
                         xt[c] = x[c] + alpha * dx[c];
                     }
-                    self.residuals(kernels, &xt, values, &mut rt, &mut xs);
-                    let mt = merit(&rt);
-                    if mt.is_finite() && (mt < m0 || mt == 0.0) {
+                    self.residuals(kernels, &xt, values, rt, xs);
+                    let mt = merit(&rt, &inv);
+                    if mt.is_finite() && (mt < m_ref.min(m0 * 10.0) || mt == 0.0) {
                         accepted = true;
                         break;
                     }
@@ -269,20 +300,20 @@ impl Component {
                 }
             }
             if !accepted {
-                // Backtracking stalls where the Jacobian is nearly singular, typically on
-                // the way to the least-squares point of constraints that cannot all hold.
-                // Damped steps keep descending to that point, where the rank test below can
-                // name the conflict; they also rescue consistent problems from a bad start.
+                // Backtracking stalls where the Jacobian is nearly singular, typically on the
+                // way to the least-squares point of constraints that cannot all hold. Damped
+                // (Levenberg-Marquardt) steps keep descending to that point, where the rank test
+                // can name the conflict; they also rescue consistent problems from a bad start.
                 // Adaptive damping as in Nocedal & Wright, "Numerical Optimization", 10.3.
                 let mut lambda = damping.unwrap_or(1e-6);
                 while lambda < 1e12 {
-                    if gram.factor_damped(&jn, cfg.rank_tolerance, lambda) {
-                        step(gram, &mut y, &mut dx);
+                    if gram.factor(lambda, cfg.rank_tolerance) {
+                        step(gram, y, dx);
                         for c in 0..ncols {
                             xt[c] = x[c] + dx[c];
                         }
-                        self.residuals(kernels, &xt, values, &mut rt, &mut xs);
-                        let mt = merit(&rt);
+                        self.residuals(kernels, &xt, values, rt, xs);
+                        let mt = merit(&rt, &inv);
                         if mt.is_finite() && (mt < m0 || mt == 0.0) {
                             accepted = true;
                             break;
@@ -291,12 +322,14 @@ impl Component {
                     lambda *= 10.0;
                 }
                 damping = Some((lambda / 10.0).max(1e-12));
+                alpha = 1.0;
                 if !accepted {
                     // Leave the undamped factorisation for the rank test.
-                    factored = gram.factor(&jn, cfg.rank_tolerance);
+                    factored = gram.factor(0.0, cfg.rank_tolerance);
                     break;
                 }
             }
+            alpha_prev = alpha;
             x.copy_from_slice(&xt);
         }
         let mut fin = Finish {
@@ -304,11 +337,11 @@ impl Component {
             iterations,
             dropped: Vec::new(),
             dependencies: Vec::new(),
-            unsatisfied: Vec::new(),
+            unsatisfied: (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect(),
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
         };
-        fin.unsatisfied = (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect();
-        if let (Some(gram), true) = (gram_slot.as_mut(), factored) {
+        self.gram = gram_slot;
+        if let (Some(gram), true) = (self.gram.as_mut(), factored) {
             fin.dropped = gram.dropped();
             if cfg.find_failed {
                 for &k in &fin.dropped {
@@ -320,7 +353,6 @@ impl Component {
             // No factorisation: count every row as unresolved.
             fin.dropped = (0..m).collect();
         }
-        self.gram = gram_slot;
         fin
     }
 }
