@@ -45,17 +45,20 @@ pub(super) fn where_dragged<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<
     }
 }
 
-/// `(pt_b - pt_a) . dir / |dir| = val`, with `dir` a line's or a normal's direction.
+/// `(pt_b - pt_a) . dir / |dir| = val`, with `dir` a line's or a normal's direction
+/// (see [`direction`]).
 pub(super) fn proj_pt_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let dir = direction(e.ent(0), g);
     let d = g.pos(e.pt(1)).minus(g.pos(e.pt(0)));
     out.push(d.dot(dir) / dir.norm() - e.val);
 }
 
-/// The direction of a line (end minus start) or of a normal (its N axis), in space.
+/// The direction of a line or of a normal (its N axis), in space. A line's direction is
+/// start minus end, as SolveSpace's `VectorGetExprs` has it: signed dimensions along a line
+/// (`proj_pt_distance`) and angles between a line and a normal depend on it.
 pub(super) fn direction<S: Scalar>(ent: &Ent, g: &Geo<S>) -> Vec3<S> {
     match ent {
-        Ent::Line(l) => g.pos(&l[1]).minus(g.pos(&l[0])),
+        Ent::Line(l) => g.pos(&l[0]).minus(g.pos(&l[1])),
         Ent::Normal(q) => g.quat(*q).n(),
         Ent::Workplane(f) => g.plane_normal(f),
         _ => unreachable!("validated: a line or a normal"),
@@ -89,22 +92,35 @@ pub(super) fn choose_symmetric(e: &Equation, g: &Geo<f64>) -> u8 {
 }
 
 /// `pt_a` and `pt_b` mirror each other in plane `entity_a`: the midpoint is on the plane and
-/// the segment between them is along the normal (projected into the workplane if there is one).
+/// the segment between them is along the normal.
+///
+/// In a workplane the constraint applies to the points' projections into it, as SolveSpace
+/// does: the midpoint of the projections (placed back in space, on the workplane) is on the
+/// plane, and the projected segment is along the normal projected into the workplane. Points
+/// of the workplane are their own projections; other points (in space, or of another
+/// workplane) may sit at any height over it.
 pub(super) fn symmetric<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let f = e.frame(0);
     let n = g.plane_normal(f);
-    let (a, b) = (g.pos(e.pt(0)), g.pos(e.pt(1)));
-    let mid = a.plus(b).scale_f(0.5);
-    out.push(mid.minus(g.v3(f.origin)).dot(n));
     match e.wp() {
         None => {
-            let ab = b.minus(a);
-            push_two(ab.cross(n).scale(S::cst(1.0) / n.norm()), e.choice, out);
+            let (a, b) = (g.pos(e.pt(0)), g.pos(e.pt(1)));
+            let mid = a.plus(b).scale_f(0.5);
+            out.push(mid.minus(g.v3(f.origin)).dot(n));
+            push_two(
+                b.minus(a).cross(n).scale(S::cst(1.0) / n.norm()),
+                e.choice,
+                out,
+            );
         }
         Some(w) => {
-            let ab = g.at(e.pt(1), Some(w)).minus(g.at(e.pt(0), Some(w)));
+            let (a, b) = (g.at(e.pt(0), Some(w)), g.at(e.pt(1), Some(w)));
+            let m = a.plus(b).scale_f(0.5);
+            let q = g.quat(w.q);
+            let mid = g.v3(w.origin).plus(q.u().scale(m.x)).plus(q.v().scale(m.y));
+            out.push(mid.minus(g.v3(f.origin)).dot(n));
             let n2 = g.project_dir(n, Some(w));
-            out.push(ab.cross(n2).z / n2.norm());
+            out.push(b.minus(a).cross(n2).z / n2.norm());
         }
     }
 }
@@ -140,12 +156,29 @@ pub(super) fn symmetric_line<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows
     out.push(d.dot(b.minus(a)) / len);
 }
 
-/// `pt_a` is at the midpoint of line `entity_a`.
+/// `pt_a` is at the midpoint of line `entity_a`; or, with no `pt_a`, the midpoint of line
+/// `entity_a` lies in plane `entity_b` (SolveSpace's second form of this constraint).
 pub(super) fn at_midpoint<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let w = e.wp();
     let l = e.line(0);
     let mid = g.at(&l[0], w).plus(g.at(&l[1], w)).scale_f(0.5);
-    let d = g.at(e.pt(0), w).minus(mid);
+    let Some(p) = &e.pts[0] else {
+        // In a workplane the midpoint is taken there and lifted back into space, as
+        // SolveSpace does.
+        let m = match w {
+            None => mid,
+            Some(f) => {
+                let q = g.quat(f.q);
+                g.v3(f.origin)
+                    .plus(q.u().scale(mid.x))
+                    .plus(q.v().scale(mid.y))
+            }
+        };
+        let plane = e.frame(1);
+        out.push(m.minus(g.v3(plane.origin)).dot(g.plane_normal(plane)));
+        return;
+    };
+    let d = g.at(p, w).minus(mid);
     out.push(d.x);
     out.push(d.y);
     if w.is_none() {
