@@ -63,7 +63,11 @@ pub(crate) fn compile_group(
         let ent = r.entity(ObjectId::Entity(e.h), e.h, &mut l)?;
         // An entity of this group whose parameters all belong to earlier groups (a copy) has
         // nothing to solve: its condition holds or not, but it is no equation of this group.
-        if !l.params.iter().any(|&p| sys.params()[p as usize].group == group) {
+        if !l
+            .params
+            .iter()
+            .any(|&p| sys.params()[p as usize].group == group)
+        {
             continue;
         }
         let eq = Equation {
@@ -129,10 +133,8 @@ pub(crate) fn resolve_constraint(
     }
     // Fields the type does not use are ignored, as validation ignores them (and libslvs
     // never reads them): a stray handle there must not fail the solve.
-    let point_form =
-        matches!(c.kind, ConstraintKind::Horizontal | ConstraintKind::Vertical)
-            && c.entity_a.is_none();
-    let used = |i: usize| sig.fields[i].is_some() || (point_form && i < 2);
+    let wants = c.wants();
+    let used = |i: usize| wants[i].is_some();
     let mut pts = [None, None];
     for (i, (slot, h)) in pts.iter_mut().zip([c.pt_a, c.pt_b]).enumerate() {
         if !used(i) {
@@ -156,7 +158,7 @@ pub(crate) fn resolve_constraint(
         .into_iter()
         .enumerate()
     {
-        if let (Some(h), true) = (h, used(i + 2) && !point_form) {
+        if let (Some(h), true) = (h, used(i + 2)) {
             ents.push(r.entity(owner, h, &mut l)?);
         }
     }

@@ -413,6 +413,31 @@ impl Constraint {
         self
     }
 
+    /// What each of the six reference fields must be for this constraint, in [`FIELD_NAMES`]
+    /// order, or `None` where the field is unused. This is [`ConstraintKind::signature`]
+    /// adjusted for the alternative forms: `horizontal`/`vertical` on two points when
+    /// `entity_a` is empty, and `at_midpoint` holding a line's midpoint on a plane
+    /// (`entity_b`) when `pt_a` is empty. Validation checks exactly these fields and the
+    /// solver reads only these.
+    #[must_use]
+    pub fn wants(&self) -> [Option<Want>; 6] {
+        use ConstraintKind as K;
+        if matches!(self.kind, K::Horizontal | K::Vertical) && self.entity_a.is_none() {
+            return [Some(Want::Point), Some(Want::Point), None, None, None, None];
+        }
+        if self.kind == K::AtMidpoint && self.pt_a.is_none() && self.entity_b.is_some() {
+            return [
+                None,
+                None,
+                Some(Want::Line),
+                Some(Want::Workplane),
+                None,
+                None,
+            ];
+        }
+        self.kind.signature().fields
+    }
+
     /// The six reference fields, in [`FIELD_NAMES`] order.
     #[must_use]
     pub fn fields(&self) -> [Option<EntityId>; 6] {
