@@ -3,7 +3,7 @@
 //! those its signature uses.
 
 use loci::format::json::{Problem, SolveResult};
-use loci::{ConstraintKind, PlaneRule, FIELD_NAMES};
+use loci::{ConstraintKind, PlaneRule, Want, FIELD_NAMES};
 use serde_json::{json, Value};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -115,11 +115,19 @@ fn schema_required_fields_follow_each_signature() {
             .filter(|(_, w)| w.is_some())
             .map(|(n, _)| *n)
             .collect();
+        // Types with two forms spell out the alternatives with anyOf.
         if matches!(kind, ConstraintKind::Horizontal | ConstraintKind::Vertical) {
-            // A line, or two points: the alternatives are spelled out with anyOf.
             assert_eq!(
                 then["anyOf"],
                 json!([{"required": ["entity_a"]}, {"required": ["pt_a", "pt_b"]}]),
+                "{kind}"
+            );
+            want.clear();
+        }
+        if kind == ConstraintKind::AtMidpoint {
+            assert_eq!(
+                then["anyOf"],
+                json!([{"required": ["pt_a", "entity_a"]}, {"required": ["entity_a", "entity_b"]}]),
                 "{kind}"
             );
             want.clear();
@@ -145,21 +153,51 @@ fn schema_rejects_what_loci_rejects() {
         x
     };
     let cases = [
-        ("unknown constraint type", bad(&|x| x["constraints"][1]["type"] = json!("sideways"))),
-        ("unknown entity type", bad(&|x| x["entities"][3]["type"] = json!("blob"))),
+        (
+            "unknown constraint type",
+            bad(&|x| x["constraints"][1]["type"] = json!("sideways")),
+        ),
+        (
+            "unknown entity type",
+            bad(&|x| x["entities"][3]["type"] = json!("blob")),
+        ),
         ("zero handle", bad(&|x| x["params"][0]["h"] = json!(0))),
-        ("missing pt_b", bad(&|x| {
-            x["constraints"][2].as_object_mut().unwrap().remove("pt_b");
-        })),
-        ("2D point without workplane", bad(&|x| {
-            x["entities"][3].as_object_mut().unwrap().remove("workplane");
-        })),
-        ("horizontal without workplane", bad(&|x| {
-            x["constraints"][1].as_object_mut().unwrap().remove("workplane");
-        })),
-        ("three params for a 2D point", bad(&|x| x["entities"][3]["params"] = json!([11, 12, 13]))),
-        ("unknown option", bad(&|x| x["solve"]["options"] = json!({"speed": 11}))),
-        ("bad tolerance", bad(&|x| x["solve"]["options"] = json!({"tolerance": 0}))),
+        (
+            "missing pt_b",
+            bad(&|x| {
+                x["constraints"][2].as_object_mut().unwrap().remove("pt_b");
+            }),
+        ),
+        (
+            "2D point without workplane",
+            bad(&|x| {
+                x["entities"][3]
+                    .as_object_mut()
+                    .unwrap()
+                    .remove("workplane");
+            }),
+        ),
+        (
+            "horizontal without workplane",
+            bad(&|x| {
+                x["constraints"][1]
+                    .as_object_mut()
+                    .unwrap()
+                    .remove("workplane");
+            }),
+        ),
+        (
+            "three params for a 2D point",
+            bad(&|x| x["entities"][3]["params"] = json!([11, 12, 13])),
+        ),
+        (
+            "unknown option",
+            bad(&|x| x["solve"]["options"] = json!({"speed": 11})),
+        ),
+        (
+            "bad tolerance",
+            bad(&|x| x["solve"]["options"] = json!({"tolerance": 0})),
+        ),
     ];
     for (what, instance) in cases {
         assert!(!v.is_valid(&instance), "the schema accepts: {what}");
@@ -176,9 +214,39 @@ fn schema_rejects_what_loci_rejects() {
 fn the_format_doc_shows_the_shipped_example_verbatim() {
     let doc = std::fs::read_to_string(root().join("docs/format.md")).unwrap();
     let example = std::fs::read_to_string(root().join("examples/two_points.json")).unwrap();
-    assert!(doc.contains(example.trim()), "docs/format.md and examples/two_points.json differ");
-    // Every type the library knows is documented in the table.
+    assert!(
+        doc.contains(example.trim()),
+        "docs/format.md and examples/two_points.json differ"
+    );
+    // Every type the library knows is documented in the table, with the entity types its
+    // signature asks for.
     for &kind in loci::ConstraintKind::ALL {
-        assert!(doc.contains(&format!("| `{}` | {} |", kind.name(), kind.slvs_code())), "{kind}");
+        let head = format!("| `{}` | {} | ", kind.name(), kind.slvs_code());
+        let row = doc
+            .lines()
+            .find(|l| l.starts_with(&head))
+            .unwrap_or_else(|| panic!("{kind} is not in the table"));
+        let fields = row[head.len()..].split(" | ").next().unwrap();
+        for (name, want) in FIELD_NAMES.iter().zip(kind.signature().fields) {
+            let Some(want) = want else { continue };
+            let words = match want {
+                Want::Point => "point",
+                Want::Line => "line_segment",
+                Want::Workplane => "workplane",
+                Want::Normal => "normal",
+                Want::LineOrNormal => "line_segment or normal",
+                Want::CircleOrArc => "circle or arc_of_circle",
+                Want::Arc => "arc_of_circle",
+                Want::Cubic => "cubic",
+                Want::Curve => "arc_of_circle or cubic",
+            };
+            let item = format!("`{name}`: {words}");
+            assert!(
+                fields
+                    .split([',', ';'])
+                    .any(|f| f.trim().trim_start_matches("or ") == item),
+                "{kind}: the table says {fields:?}, the signature {item:?}"
+            );
+        }
     }
 }
