@@ -50,8 +50,15 @@ fn every_example_solves_with_the_expected_exit_code() {
         );
         let name = p.file_name().unwrap().to_str().unwrap();
         assert!(stdout.contains(name), "the report names the file: {stdout}");
-        assert!(stdout.contains("outcome") && stdout.contains("dof"), "{stdout}");
-        assert!(out.stderr.is_empty(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            stdout.contains("outcome") && stdout.contains("dof"),
+            "{stdout}"
+        );
+        assert!(
+            out.stderr.is_empty(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
     }
 }
 
@@ -59,7 +66,12 @@ fn every_example_solves_with_the_expected_exit_code() {
 fn json_output_parses_and_carries_the_outcome() {
     for p in examples() {
         let out = loci(&["solve", p.to_str().unwrap(), "--json"]);
-        assert_eq!(out.status.code(), Some(expected_code(&p)), "{}", p.display());
+        assert_eq!(
+            out.status.code(),
+            Some(expected_code(&p)),
+            "{}",
+            p.display()
+        );
         let v: serde_json::Value = serde_json::from_slice(&out.stdout)
             .unwrap_or_else(|e| panic!("{}: not JSON ({e})", p.display()));
         let outcome = v["outcome"].as_str().expect("an outcome string");
@@ -67,7 +79,10 @@ fn json_output_parses_and_carries_the_outcome() {
             assert!(matches!(outcome, "okay" | "redundant_okay"), "{outcome}");
         } else {
             assert_eq!(outcome, "inconsistent");
-            assert!(!v["failed"].as_array().unwrap().is_empty(), "conflicts are named");
+            assert!(
+                !v["failed"].as_array().unwrap().is_empty(),
+                "conflicts are named"
+            );
         }
         assert!(v["dof"].is_u64());
         assert!(v["params"].as_array().is_some_and(|a| !a.is_empty()));
@@ -112,7 +127,10 @@ fn output_file_is_a_solved_problem_that_solves_again_unchanged() {
     let again = loci(&["solve", out_path.to_str().unwrap(), "--json"]);
     assert_eq!(again.status.code(), Some(0));
     let second: serde_json::Value = serde_json::from_slice(&again.stdout).unwrap();
-    assert_eq!(first["params"], second["params"], "a solved problem stays put");
+    assert_eq!(
+        first["params"], second["params"],
+        "a solved problem stays put"
+    );
     assert_eq!(second["iterations"], 0);
 }
 
@@ -136,7 +154,10 @@ fn malformed_file_exits_3_naming_the_file() {
     let out = loci(&["solve", unknown.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(3));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("unknown_type.json") && err.contains("squiggle"), "{err}");
+    assert!(
+        err.contains("unknown_type.json") && err.contains("squiggle"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -146,11 +167,18 @@ fn invalid_model_and_missing_file_exit_3() {
     )
     .unwrap();
     let dangling = scratch("dangling.json");
-    std::fs::write(&dangling, text.replacen("\"pt_a\": 301", "\"pt_a\": 399", 1)).unwrap();
+    std::fs::write(
+        &dangling,
+        text.replacen("\"pt_a\": 301", "\"pt_a\": 399", 1),
+    )
+    .unwrap();
     let out = loci(&["solve", dangling.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(3));
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("dangling.json") && err.contains("entity 399"), "{err}");
+    assert!(
+        err.contains("dangling.json") && err.contains("entity 399"),
+        "{err}"
+    );
 
     let missing = scratch("does_not_exist.json");
     let out = loci(&["solve", missing.to_str().unwrap()]);

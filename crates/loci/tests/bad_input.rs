@@ -115,7 +115,9 @@ fn dangling_param_in_an_entity() {
 #[test]
 fn dangling_entity_in_an_entity_and_in_a_constraint() {
     let mut s = base();
-    s.sys.add_entity(Entity::line(304, 2, None, 301, 999)).unwrap();
+    s.sys
+        .add_entity(Entity::line(304, 2, None, 301, 999))
+        .unwrap();
     solve_err(
         s.sys,
         ModelError::Dangling {
@@ -157,11 +159,13 @@ fn a_circle_where_a_line_is_needed() {
     let mut s = base();
     let r = s.param(2, 4.0);
     s.sys.add_entity(Entity::normal_2d(310, 2, WP)).unwrap();
-    s.sys.add_entity(Entity::distance(311, 2, Some(WP), r)).unwrap();
+    s.sys
+        .add_entity(Entity::distance(311, 2, Some(WP), r))
+        .unwrap();
     s.sys
         .add_entity(Entity::circle(312, 2, Some(WP), 301, 310, 311))
         .unwrap();
-    let c = s.on_entities(2, K::Perpendicular, 303, 312, 0.0);
+    let c = s.on_entities(2, K::EqualLengthLines, 303, 312, 0.0);
     solve_err(
         s.sys,
         ModelError::WrongKind {
@@ -206,7 +210,9 @@ fn a_line_where_a_point_or_workplane_is_needed() {
 
     // A line whose end is a line.
     let mut s = base();
-    s.sys.add_entity(Entity::line(304, 2, None, 301, 303)).unwrap();
+    s.sys
+        .add_entity(Entity::line(304, 2, None, 301, 303))
+        .unwrap();
     solve_err(
         s.sys,
         ModelError::WrongKind {
@@ -222,7 +228,9 @@ fn a_line_where_a_point_or_workplane_is_needed() {
 #[test]
 fn a_workplane_built_from_the_wrong_parts() {
     let mut s = base();
-    s.sys.add_entity(Entity::workplane(320, 2, 301, 102)).unwrap();
+    s.sys
+        .add_entity(Entity::workplane(320, 2, 301, 102))
+        .unwrap();
     solve_err(
         s.sys,
         ModelError::WrongKind {
@@ -253,7 +261,12 @@ fn a_2d_point_without_a_workplane_and_a_point_in_its_own_plane() {
     s.sys
         .add_entity(Entity::point_2d(304, 2, 304, [1000, 1001]))
         .unwrap();
-    solve_err(s.sys, ModelError::Cycle { entity: EntityId(304) });
+    solve_err(
+        s.sys,
+        ModelError::Cycle {
+            entity: EntityId(304),
+        },
+    );
 }
 
 #[test]
@@ -369,7 +382,12 @@ fn unknown_dragged_parameter() {
     let mut s = base();
     s.on_points(2, K::PtPtDistance, 301, 302, 5.0);
     assert_eq!(
-        solve(&mut s.sys, 2.into(), &[ParamId(1000), ParamId(31337)], &Config::default()),
+        solve(
+            &mut s.sys,
+            2.into(),
+            &[ParamId(1000), ParamId(31337)],
+            &Config::default()
+        ),
         Err(SolveError::UnknownDragged(31337))
     );
 }
@@ -382,7 +400,11 @@ fn bad_options() {
     let cases = [
         ("tolerance", d().with_tolerance(0.0), 0.0),
         ("tolerance", d().with_tolerance(-1e-9), -1e-9),
-        ("tolerance", d().with_tolerance(f64::INFINITY), f64::INFINITY),
+        (
+            "tolerance",
+            d().with_tolerance(f64::INFINITY),
+            f64::INFINITY,
+        ),
         ("dragged_scale", d().with_dragged_scale(0.0), 0.0),
         ("dragged_scale", d().with_dragged_scale(1.5), 1.5),
         ("rank_tolerance", d().with_rank_tolerance(0.0), 0.0),
@@ -434,7 +456,12 @@ fn json_err(text: &str) -> String {
 #[test]
 fn malformed_json_is_an_error_with_a_position() {
     assert!(Problem::from_json(TRIANGLE).is_ok());
-    for cut in [1, TRIANGLE.len() / 3, TRIANGLE.len() / 2, TRIANGLE.len() - 3] {
+    for cut in [
+        1,
+        TRIANGLE.len() / 3,
+        TRIANGLE.len() / 2,
+        TRIANGLE.len() - 3,
+    ] {
         let msg = json_err(&TRIANGLE[..cut]);
         assert!(msg.contains("line") && msg.contains("column"), "{msg}");
     }
@@ -451,13 +478,20 @@ fn unknown_type_names_are_named_in_the_error() {
     let text = TRIANGLE.replacen("\"horizontal\"", "\"kinda_horizontal\"", 1);
     let msg = json_err(&text);
     assert!(msg.contains("kinda_horizontal"), "{msg}");
-    assert!(msg.contains("points_coincident"), "lists the known types: {msg}");
+    assert!(
+        msg.contains("points_coincident"),
+        "lists the known types: {msg}"
+    );
 }
 
 #[test]
 fn zero_and_repeated_handles_in_json_are_named() {
     let text = TRIANGLE.replacen("\"h\": 11,", "\"h\": 0,", 1);
-    assert!(json_err(&text).contains("has handle 0"), "{}", json_err(&text));
+    assert!(
+        json_err(&text).contains("has handle 0"),
+        "{}",
+        json_err(&text)
+    );
     let text = TRIANGLE.replacen("\"h\": 12,", "\"h\": 11,", 1);
     let msg = json_err(&text);
     assert!(msg.contains("param 11 is defined twice"), "{msg}");
@@ -647,8 +681,8 @@ fn pool(vals: &[f64]) -> System {
 }
 
 const POOL: [u32; 21] = [
-    200, 101, 102, 301, 302, 303, 304, 305, 306, 311, 312, 313, 314, 320, 321, 322, 323, 324,
-    325, 326, 327,
+    200, 101, 102, 301, 302, 303, 304, 305, 306, 311, 312, 313, 314, 320, 321, 322, 323, 324, 325,
+    326, 327,
 ];
 
 fn value() -> impl Strategy<Value = f64> {

@@ -42,7 +42,11 @@ fn solve_and_check(n: usize, seed: u64) {
     // 4n unknowns and 4n independent equations: see the construction's notes.
     assert_eq!(rep.dof, 0);
     assert!(rep.failed.is_empty());
-    assert_eq!(rep.unknowns, 4 * n - 2 * (n - 1) - 3, "coincidences, pin and horizontal merge");
+    assert_eq!(
+        rep.unknowns,
+        4 * n - 2 * (n - 1) - 3,
+        "coincidences, pin and horizontal merge"
+    );
     let worst = worst_residual(&ch, &sys);
     assert!(worst < 1e-9, "largest residual {worst:e}");
     // Fully constrained and started near the exact drawing: the solve lands on it. The

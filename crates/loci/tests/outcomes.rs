@@ -120,8 +120,12 @@ fn square_with_an_implied_right_angle_is_redundant_with_no_dof() {
     // the four perpendiculars only.
     assert_eq!(rep.failed, ids(&[p1, p2, p3, p4]));
     let (pa, pb, pc, pd) = (s.uv(a), s.uv(b), s.uv(c), s.uv(d));
-    for (got, want) in [(pa, [0.0, 0.0]), (pb, [10.0, 0.0]), (pc, [10.0, 10.0]), (pd, [0.0, 10.0])]
-    {
+    for (got, want) in [
+        (pa, [0.0, 0.0]),
+        (pb, [10.0, 0.0]),
+        (pc, [10.0, 10.0]),
+        (pd, [0.0, 10.0]),
+    ] {
         assert!(dist(got, want) < 1e-9, "{got:?} != {want:?}");
     }
 }
@@ -136,7 +140,11 @@ fn triangle_violating_the_triangle_inequality_is_inconsistent() {
     // Five unknowns after the pin and the horizontal; the three lengths have rank two at the
     // collinear least-squares point.
     assert_eq!(rep.dof, 1);
-    assert_eq!(value_bits(&s.sys), before, "a failed solve leaves the parameters");
+    assert_eq!(
+        value_bits(&s.sys),
+        before,
+        "a failed solve leaves the parameters"
+    );
 }
 
 #[test]
@@ -204,7 +212,10 @@ fn unsatisfied_lists_exactly_the_constraints_left_violated() {
     assert_eq!(rep.failed, ids(&[ab, eb]));
     assert!(!rep.failed.contains(&held.into()));
     assert_eq!(rep.components, 2);
-    assert_eq!(rep.dof, 3, "b is fixed by its two circles; c, d and a distance leave 3");
+    assert_eq!(
+        rep.dof, 3,
+        "b is fixed by its two circles; c, d and a distance leave 3"
+    );
     assert_eq!(s.uv(b), [1000.0, 300.0], "nothing written back");
     let rep = s.sys.solve_group(2).unwrap();
     assert_eq!((rep.outcome, rep.dof), (Outcome::Okay, 3));
@@ -300,8 +311,16 @@ fn solving_a_later_group_moves_only_its_own_parameters() {
     assert_eq!(rep.failed, ids(&[g3_on_g2]));
     assert_eq!(rep.unknowns, 2);
     assert_eq!(rep.dof, 0);
-    assert_eq!(group_bits(&s.sys, 1), g1, "group-1 values are bit-identical");
-    assert_eq!(group_bits(&s.sys, 2), g2, "group-2 values are bit-identical");
+    assert_eq!(
+        group_bits(&s.sys, 1),
+        g1,
+        "group-1 values are bit-identical"
+    );
+    assert_eq!(
+        group_bits(&s.sys, 2),
+        g2,
+        "group-2 values are bit-identical"
+    );
     let (pa, pb, pc) = (s.uv(a), s.uv(b), s.uv(c));
     assert!((dist(pc, pa) - 6.0).abs() < 1e-9 && (dist(pc, pb) - 6.0).abs() < 1e-9);
     assert!(pc[1] > pa[1], "c stays on the side it started");
@@ -351,7 +370,9 @@ fn point_off_circle() -> (Sketch, [ParamId; 2], [ParamId; 3]) {
     let p = s.point(302, 2, [7.0, 0.0]);
     let r = s.param(2, 5.0);
     s.sys.add_entity(Entity::normal_2d(303, 2, WP)).unwrap();
-    s.sys.add_entity(Entity::distance(304, 2, Some(WP), r)).unwrap();
+    s.sys
+        .add_entity(Entity::distance(304, 2, Some(WP), r))
+        .unwrap();
     s.sys
         .add_entity(Entity::circle(305, 2, Some(WP), center, 303, 304))
         .unwrap();

@@ -76,9 +76,12 @@ pub fn chain(n: usize, seed: u64, perturb: f64) -> Chain {
     {
         sys.add_param(Param::new(h, 1, v)).expect("fresh handle");
     }
-    sys.add_entity(Entity::point_3d(1, 1, [1, 2, 3])).expect("fresh");
-    sys.add_entity(Entity::normal_3d(2, 1, [4, 5, 6, 7])).expect("fresh");
-    sys.add_entity(Entity::workplane(CHAIN_WP, 1, 1, 2)).expect("fresh");
+    sys.add_entity(Entity::point_3d(1, 1, [1, 2, 3]))
+        .expect("fresh");
+    sys.add_entity(Entity::normal_3d(2, 1, [4, 5, 6, 7]))
+        .expect("fresh");
+    sys.add_entity(Entity::workplane(CHAIN_WP, 1, 1, 2))
+        .expect("fresh");
 
     let lengths: Vec<f64> = (0..n).map(|_| rng.uniform(5.0, 15.0)).collect();
     let turns: Vec<f64> = (1..n)
@@ -132,7 +135,8 @@ pub fn chain(n: usize, seed: u64, perturb: f64) -> Chain {
     }
     let wp = Some(CHAIN_WP);
     let mut add = |c: Constraint| {
-        sys.add_constraint(c.in_workplane(wp)).expect("fresh handle");
+        sys.add_constraint(c.in_workplane(wp))
+            .expect("fresh handle");
     };
     add(Constraint::new(next_c(), g, K::WhereDragged).with_points(segments[0][0], 0));
     add(Constraint::new(next_c(), g, K::Horizontal).with_entities([segments[0][2], 0, 0, 0]));

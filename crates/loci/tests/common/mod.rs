@@ -55,13 +55,17 @@ impl Sketch {
     pub fn point(&mut self, h: u32, group: u32, uv: [f64; 2]) -> u32 {
         let u = self.param(group, uv[0]);
         let v = self.param(group, uv[1]);
-        self.sys.add_entity(Entity::point_2d(h, group, WP, [u, v])).unwrap();
+        self.sys
+            .add_entity(Entity::point_2d(h, group, WP, [u, v]))
+            .unwrap();
         h
     }
 
     /// A line segment in the workplane.
     pub fn line(&mut self, h: u32, group: u32, a: u32, b: u32) -> u32 {
-        self.sys.add_entity(Entity::line(h, group, Some(WP), a, b)).unwrap();
+        self.sys
+            .add_entity(Entity::line(h, group, Some(WP), a, b))
+            .unwrap();
         h
     }
 
@@ -76,7 +80,11 @@ impl Sketch {
 
     /// A constraint of `kind` in `group` with points `a`, `b` (0 = none).
     pub fn on_points(&mut self, group: u32, kind: ConstraintKind, a: u32, b: u32, val: f64) -> u32 {
-        self.constrain(Constraint::new(0, group, kind).with_points(a, b).with_val(val))
+        self.constrain(
+            Constraint::new(0, group, kind)
+                .with_points(a, b)
+                .with_val(val),
+        )
     }
 
     /// A constraint of `kind` in `group` on entities `a`, `b` (0 = none).
@@ -118,7 +126,10 @@ pub fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
 
 /// Every parameter value of `sys`, as bits, for exact comparisons.
 pub fn value_bits(sys: &System) -> Vec<(u32, u64)> {
-    sys.params().iter().map(|p| (p.h.0, p.val.to_bits())).collect()
+    sys.params()
+        .iter()
+        .map(|p| (p.h.0, p.val.to_bits()))
+        .collect()
 }
 
 /// Constraint handles as the report lists them.
