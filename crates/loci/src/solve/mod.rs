@@ -11,8 +11,8 @@
 //!    redundant or conflicting constraints.
 
 mod config;
-mod gram;
-mod newton;
+pub(crate) mod gram;
+pub(crate) mod newton;
 mod report;
 mod substitute;
 
@@ -41,6 +41,34 @@ pub fn solve(
     dragged: &[ParamId],
     cfg: &Config,
 ) -> Result<Report, SolveError> {
+    let (mut report, values) = solve_core(sys, group, dragged, cfg)?;
+    if report.outcome == Outcome::Inconsistent && cfg.find_failed {
+        // Name the minimal sets that cannot hold together, found on the unmerged equations
+        // where the solve stopped; only failures pay for it.
+        crate::diagnose::name_conflicts(sys, group, &values, cfg, &mut report);
+    }
+    // Values are written back only when every constraint holds, as libslvs does: a failed
+    // solve leaves the caller's parameters as they were.
+    if report.outcome.is_ok() {
+        let handles: Vec<(ParamId, bool)> =
+            sys.params().iter().map(|p| (p.h, p.group == group)).collect();
+        for (p, (h, unknown)) in handles.into_iter().enumerate() {
+            if unknown {
+                sys.set_value(h, values[p]);
+            }
+        }
+    }
+    Ok(report)
+}
+
+/// Solves `group` without touching `sys`: the report, and the value of every parameter where
+/// the solve stopped (in [`System::params`] order), whether or not it succeeded.
+pub(crate) fn solve_core(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+) -> Result<(Report, Vec<f64>), SolveError> {
     cfg.check()?;
     sys.validate()?;
     let params = sys.params();
@@ -242,10 +270,11 @@ pub fn solve(
             let (b, _) = comp.row_block[row];
             kernels[comp.blocks[b as usize].kernel].owner
         };
+        // Kept even when the component failed: the diagnosis starts where Newton stopped.
+        for (i, &c) in cols.iter().enumerate() {
+            x_all[c] = x[i];
+        }
         if fin.converged {
-            for (i, &c) in cols.iter().enumerate() {
-                x_all[c] = x[i];
-            }
             for dep in &fin.dependencies {
                 redundant.extend(dep.iter().map(|&r| owner_of(r)));
             }
@@ -309,22 +338,16 @@ pub fn solve(
         report.failed_entities.sort_unstable();
         report.failed_entities.dedup();
     }
-    // Values are written back only when every constraint holds, as libslvs does: a failed
-    // solve leaves the caller's parameters as they were.
-    if report.outcome.is_ok() {
-        let handles: Vec<ParamId> = sys.params().iter().map(|p| p.h).collect();
-        for p in 0..np {
-            if !unknown[p] {
-                continue;
-            }
-            let val = match col_of_param(p, &col_of_root) {
+    let mut out = values;
+    for p in 0..np {
+        if unknown[p] {
+            out[p] = match col_of_param(p, &col_of_root) {
                 Some(c) => x_all[c as usize],
                 None => start[p],
             };
-            sys.set_value(handles[p], val);
         }
     }
-    Ok(report)
+    Ok((report, out))
 }
 
 impl System {
