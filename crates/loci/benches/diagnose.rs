@@ -2,6 +2,7 @@
 //! motions of every entity, measurements) of long chains of segments.
 //!
 //! `cargo bench -p loci --bench diagnose`
+#![allow(missing_docs)]
 
 #[path = "../tests/common/chain.rs"]
 mod chain;

@@ -15,7 +15,10 @@ use super::motion::{direction, direction3, Motion};
 use super::report::EntityFreedom;
 use super::unmerged::{Equations, Linear, CONSTANT};
 use crate::model::{EntityId, EntityKind, GroupId, ParamId, System};
-use faer::Mat;
+use super::eigen::symmetric_eigen;
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::rc::Rc;
 
 /// Samples of a large null space; more than any entity has parameters.
 const SAMPLES: usize = 16;
@@ -23,7 +26,7 @@ const SAMPLES: usize = 16;
 const OVERSAMPLE: usize = 2;
 /// A motion counts when the entity moves at least this much per unit of motion of the whole
 /// system (the samples are orthonormal); below it, it is rounding.
-const FREE_EPS: f64 = 1e-8;
+const FREE_EPS: f64 = 1e-7;
 
 /// A deterministic generator of samples, so that reports are reproducible.
 struct SplitMix(u64);
@@ -106,28 +109,34 @@ struct Span {
 }
 
 impl Span {
+    /// From the eigenpairs of `W Wᵀ`, with `W` the samples restricted to `cols`: its
+    /// eigenvectors are the motions, and `Wᵀ u / λ` the weights that make `u`.
     fn new(cols: &[u32], vectors: &[Vec<f64>]) -> Self {
         let (p, k) = (cols.len(), vectors.len());
-        let empty = Self {
+        let mut out = Self {
             basis: Vec::new(),
             weights: Vec::new(),
         };
         if p == 0 || k == 0 {
-            return empty;
+            return out;
         }
-        let w = Mat::<f64>::from_fn(p, k, |i, j| vectors[j][cols[i] as usize]);
-        let Ok(svd) = w.thin_svd() else {
-            return empty;
-        };
-        let (u, s, v) = (svd.U(), svd.S().column_vector(), svd.V());
-        let mut out = empty;
-        for i in 0..p.min(k) {
-            let si = s[i];
-            if !(si > FREE_EPS) {
+        let w = |i: usize, l: usize| vectors[l][cols[i] as usize];
+        let mut m = vec![0.0; p * p];
+        for i in 0..p {
+            for j in i..p {
+                let d: f64 = (0..k).map(|l| w(i, l) * w(j, l)).sum();
+                m[i * p + j] = d;
+                m[j * p + i] = d;
+            }
+        }
+        let (values, vecs) = symmetric_eigen(m, p);
+        for (i, &l) in values.iter().enumerate() {
+            if !(l > FREE_EPS * FREE_EPS) {
                 break;
             }
-            out.basis.push((0..p).map(|r| u[(r, i)]).collect());
-            out.weights.push((0..k).map(|j| v[(j, i)] / si).collect());
+            let u: Vec<f64> = (0..p).map(|r| vecs[r * p + i]).collect();
+            out.weights.push((0..k).map(|c| (0..p).map(|r| w(r, c) * u[r]).sum::<f64>() / l).collect());
+            out.basis.push(u);
         }
         out
     }
@@ -137,15 +146,35 @@ impl Span {
     }
 }
 
+/// An entity's unknown columns, those parameters, and its span.
+struct Entry {
+    cols: Vec<u32>,
+    params: Vec<ParamId>,
+    span: Span,
+}
+
 /// Context for describing entities.
 struct Ctx<'a> {
     sys: &'a System,
     eqs: &'a Equations,
     values: &'a [f64],
     vectors: &'a [Vec<f64>],
+    /// Spans already computed: a point is both an entity and a part of its lines.
+    seen: RefCell<HashMap<EntityId, Rc<Entry>>>,
 }
 
 impl Ctx<'_> {
+    fn entry(&self, h: EntityId) -> Rc<Entry> {
+        if let Some(e) = self.seen.borrow().get(&h) {
+            return e.clone();
+        }
+        let (cols, params) = self.cols(h);
+        let span = Span::new(&cols, self.vectors);
+        let e = Rc::new(Entry { cols, params, span });
+        self.seen.borrow_mut().insert(h, e.clone());
+        e
+    }
+
     /// The parameters an entity reads, in order, without repeats.
     fn params(&self, h: EntityId, out: &mut Vec<ParamId>, depth: u32) {
         let Some(e) = self.sys.entity(h) else { return };
@@ -269,14 +298,13 @@ impl Ctx<'_> {
         let mut out = Vec::new();
         let (mut sum, mut full) = (0, 0);
         for (role, part) in ps {
-            let (cols, pparams) = self.cols(part);
-            if cols.is_empty() {
+            let e = self.entry(part);
+            if e.cols.is_empty() {
                 continue;
             }
-            full += full_dof(self.sys, part, cols.len());
-            let s = Span::new(&cols, self.vectors);
-            sum += s.dof();
-            for m in self.leaf(part, &s, &pparams) {
+            full += full_dof(self.sys, part, e.cols.len());
+            sum += e.span.dof();
+            for m in self.leaf(part, &e.span, &e.params) {
                 out.push(Motion::Part {
                     role: role.to_string(),
                     part,
@@ -419,26 +447,26 @@ pub(crate) fn freedoms(
         eqs,
         values,
         vectors,
+        seen: RefCell::new(HashMap::new()),
     };
     let mut out = Vec::new();
     for e in sys.entities() {
         if e.group != group {
             continue;
         }
-        let (cols, params) = ctx.cols(e.h);
-        if cols.is_empty() {
+        let entry = ctx.entry(e.h);
+        if entry.cols.is_empty() {
             continue;
         }
-        let span = Span::new(&cols, vectors);
-        let motions = ctx.describe(e.h, &span, &params);
+        let motions = ctx.describe(e.h, &entry.span, &entry.params);
         out.push(EntityFreedom {
             entity: e.h,
             kind: e.entity_type(),
-            dof: span.dof(),
+            dof: entry.span.dof(),
             motions,
-            params,
-            basis: span.basis,
-            weights: span.weights,
+            params: entry.params.clone(),
+            basis: entry.span.basis.clone(),
+            weights: entry.span.weights.clone(),
         });
     }
     out

@@ -15,6 +15,7 @@
 //! 5. **Measurements** of reference constraints ([`measure`]).
 
 mod circuits;
+mod eigen;
 mod freedom;
 mod measure;
 mod minimal;
@@ -51,11 +52,11 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let eqs = Equations::new(sys, group, &start)?;
 
-    // 1. Counting, on the pattern of the Jacobian at the start and at a generic nearby point.
+    // 1. Counting, on the pattern of the Jacobian at a generic point near the start (where no
+    // derivative vanishes by accident, as the vertical one of a horizontal distance does).
     let structural = {
-        let at = eqs.linearise(&start);
         let generic = eqs.linearise(&perturbed(&eqs, &start));
-        structure::over_constrained(&eqs, &structure::pattern(&eqs, &at, &generic))
+        structure::over_constrained(&eqs, &structure::pattern(&eqs, &generic))
     };
 
     // 2. Solve; the lists are ours to make.

@@ -110,6 +110,7 @@ impl fmt::Display for Motion {
                 Motion::ValueFree | Motion::Free => write!(f, "{role} free"),
                 ref m => write!(f, "{role} {m}"),
             },
+            Motion::Coupled { dof: 1 } => f.write_str("1 degree of freedom in all"),
             Motion::Coupled { dof } => write!(f, "{dof} degrees of freedom in all"),
         }
     }

@@ -10,14 +10,12 @@ use std::collections::VecDeque;
 
 const NONE: u32 = u32::MAX;
 
-/// Which unknowns each row involves: the nonzeros of the Jacobian at two points (the one given
-/// and a generic perturbation of it), so that an entry that merely happens to vanish (the
-/// vertical component of a horizontal distance) still counts.
-pub(crate) fn pattern(eqs: &Equations, at: &Linear, generic: &Linear) -> Vec<Vec<u32>> {
+/// Which unknowns each row involves: the nonzeros of the Jacobian at a generic point.
+pub(crate) fn pattern(eqs: &Equations, generic: &Linear) -> Vec<Vec<u32>> {
     (0..eqs.rows)
         .map(|row| {
             eqs.row_entries(row)
-                .filter(|&(_, idx)| at.jn[idx as usize] != 0.0 || generic.jn[idx as usize] != 0.0)
+                .filter(|&(_, idx)| generic.jn[idx as usize] != 0.0)
                 .map(|(c, _)| c)
                 .collect()
         })
