@@ -23,14 +23,20 @@ fn named(sys: &System, m: &Member) -> String {
             format!("{c} ({kind})")
         }
         Member::Entity(e) => {
-            let kind = sys.entity(*e).map(|e| e.entity_type().name()).unwrap_or("?");
+            let kind = sys
+                .entity(*e)
+                .map(|e| e.entity_type().name())
+                .unwrap_or("?");
             format!("{e} ({kind}, implicit condition)")
         }
     }
 }
 
 fn list(sys: &System, ms: &[Member]) -> String {
-    ms.iter().map(|m| named(sys, m)).collect::<Vec<_>>().join(", ")
+    ms.iter()
+        .map(|m| named(sys, m))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// Renders a diagnosis; `all` lists fixed entities as well.
@@ -49,7 +55,10 @@ pub(crate) fn render(name: &str, sys: &System, d: &Diagnosis, all: bool) -> Stri
         d.dof, d.unknowns, d.equations, d.rank
     );
     if d.structural.is_empty() {
-        let _ = writeln!(s, "  counting     no block has more equations than unknowns");
+        let _ = writeln!(
+            s,
+            "  counting     no block has more equations than unknowns"
+        );
     } else {
         let _ = writeln!(s, "  counting     over-constrained blocks:");
         for b in &d.structural {

@@ -59,10 +59,49 @@ fn chain(n: usize, seed: u64) -> System {
     s
 }
 
+/// `n` independent triangles, each with one point dragged-fixed, a horizontal side and three
+/// side lengths, started 0.3 away from a solution.
+fn triangles(n: usize) -> System {
+    let mut s = System::new();
+    for (h, v) in [(1, 0.0), (2, 0.0), (3, 0.0), (4, 1.0), (5, 0.0), (6, 0.0), (7, 0.0)] {
+        s.add_param(Param::new(h, 1, v)).unwrap();
+    }
+    s.add_entity(Entity::point_3d(1, 1, [1, 2, 3])).unwrap();
+    s.add_entity(Entity::normal_3d(2, 1, [4, 5, 6, 7])).unwrap();
+    s.add_entity(Entity::workplane(3, 1, 1, 2)).unwrap();
+    let (mut p, mut e, mut c) = (10u32, 10u32, 1u32);
+    for i in 0..n {
+        let x0 = (i % 100) as f64 * 10.0;
+        let y0 = (i / 100) as f64 * 10.0;
+        let pts = [(x0, y0), (x0 + 3.2, y0 + 0.25), (x0 + 0.2, y0 + 4.3)];
+        let mut ents = [0u32; 3];
+        for (k, (x, y)) in pts.iter().enumerate() {
+            s.add_param(Param::new(p, 2, *x)).unwrap();
+            s.add_param(Param::new(p + 1, 2, *y)).unwrap();
+            s.add_entity(Entity::point_2d(e, 2, 3, [p, p + 1])).unwrap();
+            ents[k] = e;
+            p += 2;
+            e += 1;
+        }
+        let d = |a, b, v, c: &mut u32, s: &mut System| {
+            s.add_constraint(Constraint::new(*c, 2, K::PtPtDistance).in_workplane(Some(3)).with_points(a, b).with_val(v)).unwrap();
+            *c += 1;
+        };
+        d(ents[0], ents[1], 3.0, &mut c, &mut s);
+        d(ents[1], ents[2], 5.0, &mut c, &mut s);
+        d(ents[2], ents[0], 4.0, &mut c, &mut s);
+        s.add_constraint(Constraint::new(c, 2, K::WhereDragged).in_workplane(Some(3)).with_points(ents[0], 0)).unwrap();
+        c += 1;
+        s.add_constraint(Constraint::new(c, 2, K::Horizontal).in_workplane(Some(3)).with_points(ents[0], ents[1])).unwrap();
+        c += 1;
+    }
+    s
+}
+
 fn main() {
     let n: usize = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(1000);
     let reps: usize = std::env::args().nth(2).and_then(|a| a.parse().ok()).unwrap_or(5);
-    let base = chain(n, 7);
+    let base = if std::env::var_os("TRIANGLES").is_some() { triangles(n) } else { chain(n, 7) };
     let mut times = Vec::new();
     for _ in 0..reps {
         let mut s = base.clone();
@@ -75,4 +114,25 @@ fn main() {
     }
     times.sort_by(|a, b| a.partial_cmp(b).unwrap());
     println!("chain {n}: median {:.2} ms (min {:.2})", times[times.len() / 2], times[0]);
+    // Re-solve after moving the fixed first point slightly, from the solved state.
+    let mut solved = base.clone();
+    let mut solver = loci::Solver::new(2, &[], Config::default());
+    let t = Instant::now();
+    solver.solve(&mut solved).unwrap();
+    println!("first solve with a Solver: {:.2} ms", t.elapsed().as_secs_f64() * 1e3);
+    let mut again = Vec::new();
+    for i in 0..reps {
+        let p = loci::ParamId(10);
+        let v = solved.value(p).unwrap();
+        solved.set_value(p, v + 0.01);
+        let t = Instant::now();
+        let r = solver.solve(&mut solved).unwrap();
+        again.push(t.elapsed().as_secs_f64() * 1e3);
+        assert!(r.outcome.is_ok(), "{r:?}");
+        if i == 0 {
+            println!("re-solve: {} iterations", r.iterations);
+        }
+    }
+    again.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    println!("re-solve after moving the fixed point by 0.01: median {:.2} ms", again[again.len() / 2]);
 }

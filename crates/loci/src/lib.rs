@@ -49,4 +49,4 @@ pub use model::{
     Constraint, ConstraintId, ConstraintKind, Entity, EntityId, EntityKind, EntityType, GroupId,
     ObjectId, Param, ParamId, PlaneRule, Signature, System, Want, FIELD_NAMES,
 };
-pub use solve::{solve, Config, Outcome, Report};
+pub use solve::{solve, Config, Outcome, Report, Solver};

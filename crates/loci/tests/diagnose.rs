@@ -4,8 +4,8 @@
 mod chain;
 
 use loci::{
-    diagnose, Config, ConflictSet, Constraint, ConstraintId, ConstraintKind as K, Entity,
-    EntityId, GroupId, Member, Outcome, Param, System,
+    diagnose, Config, ConflictSet, Constraint, ConstraintId, ConstraintKind as K, Entity, EntityId,
+    GroupId, Member, Outcome, Param, System,
 };
 use proptest::prelude::*;
 use proptest::test_runner::{Config as PropConfig, RngSeed};
@@ -15,11 +15,20 @@ const WP: u32 = 200;
 /// The xy workplane (entity 200) in group 1.
 fn plane() -> System {
     let mut s = System::new();
-    for (h, v) in [(1, 0.0), (2, 0.0), (3, 0.0), (4, 1.0), (5, 0.0), (6, 0.0), (7, 0.0)] {
+    for (h, v) in [
+        (1, 0.0),
+        (2, 0.0),
+        (3, 0.0),
+        (4, 1.0),
+        (5, 0.0),
+        (6, 0.0),
+        (7, 0.0),
+    ] {
         s.add_param(Param::new(h, 1, v)).unwrap();
     }
     s.add_entity(Entity::point_3d(101, 1, [1, 2, 3])).unwrap();
-    s.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7])).unwrap();
+    s.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7]))
+        .unwrap();
     s.add_entity(Entity::workplane(WP, 1, 101, 102)).unwrap();
     s
 }
@@ -28,7 +37,8 @@ fn plane() -> System {
 fn pt(s: &mut System, h: u32, x: f64, y: f64) {
     s.add_param(Param::new(10 * h, 2, x)).unwrap();
     s.add_param(Param::new(10 * h + 1, 2, y)).unwrap();
-    s.add_entity(Entity::point_2d(h, 2, WP, [10 * h, 10 * h + 1])).unwrap();
+    s.add_entity(Entity::point_2d(h, 2, WP, [10 * h, 10 * h + 1]))
+        .unwrap();
 }
 
 fn line(s: &mut System, h: u32, a: u32, b: u32) {
@@ -40,7 +50,9 @@ fn add(s: &mut System, c: Constraint) {
 }
 
 fn cs(hs: &[u32]) -> Vec<Member> {
-    hs.iter().map(|&h| Member::Constraint(ConstraintId(h))).collect()
+    hs.iter()
+        .map(|&h| Member::Constraint(ConstraintId(h)))
+        .collect()
 }
 
 fn run(s: &System) -> loci::Diagnosis {
@@ -57,12 +69,39 @@ fn triangle(height: f64) -> System {
     pt(&mut s, 3, -0.1, 3.8);
     line(&mut s, 12, 1, 2);
     line(&mut s, 23, 2, 3);
-    add(&mut s, Constraint::new(1, 2, K::WhereDragged).with_points(1, 0));
-    add(&mut s, Constraint::new(2, 2, K::PtPtDistance).with_points(1, 2).with_val(3.0));
-    add(&mut s, Constraint::new(3, 2, K::PtPtDistance).with_points(2, 3).with_val(5.0));
-    add(&mut s, Constraint::new(4, 2, K::PtPtDistance).with_points(3, 1).with_val(4.0));
-    add(&mut s, Constraint::new(5, 2, K::Horizontal).with_entities([12, 0, 0, 0]));
-    add(&mut s, Constraint::new(6, 2, K::PtLineDistance).with_points(1, 0).with_entities([23, 0, 0, 0]).with_val(height));
+    add(
+        &mut s,
+        Constraint::new(1, 2, K::WhereDragged).with_points(1, 0),
+    );
+    add(
+        &mut s,
+        Constraint::new(2, 2, K::PtPtDistance)
+            .with_points(1, 2)
+            .with_val(3.0),
+    );
+    add(
+        &mut s,
+        Constraint::new(3, 2, K::PtPtDistance)
+            .with_points(2, 3)
+            .with_val(5.0),
+    );
+    add(
+        &mut s,
+        Constraint::new(4, 2, K::PtPtDistance)
+            .with_points(3, 1)
+            .with_val(4.0),
+    );
+    add(
+        &mut s,
+        Constraint::new(5, 2, K::Horizontal).with_entities([12, 0, 0, 0]),
+    );
+    add(
+        &mut s,
+        Constraint::new(6, 2, K::PtLineDistance)
+            .with_points(1, 0)
+            .with_entities([23, 0, 0, 0])
+            .with_val(height),
+    );
     s
 }
 
@@ -86,7 +125,13 @@ fn triangle_with_a_distance_too_many_that_disagrees_conflicts() {
     let mut s = triangle(2.0);
     let d = run(&s);
     assert_eq!(d.outcome, Outcome::Inconsistent);
-    assert_eq!(d.conflicting, vec![ConflictSet { members: cs(&[6, 4, 3, 2]), verified: true }]);
+    assert_eq!(
+        d.conflicting,
+        vec![ConflictSet {
+            members: cs(&[6, 4, 3, 2]),
+            verified: true
+        }]
+    );
     assert!(d.redundant.is_empty());
     // The solver names the same constraints.
     let r = s.solve_group(2).unwrap();
@@ -110,7 +155,13 @@ fn a_tangential_height_is_redundant_with_the_side_it_touches() {
     // there, to first order, it says what the side 3-1 says.
     let mut s = triangle(2.4);
     s.remove_constraint(ConstraintId(6));
-    add(&mut s, Constraint::new(7, 2, K::PtLineDistance).with_points(3, 0).with_entities([12, 0, 0, 0]).with_val(4.0));
+    add(
+        &mut s,
+        Constraint::new(7, 2, K::PtLineDistance)
+            .with_points(3, 0)
+            .with_entities([12, 0, 0, 0])
+            .with_val(4.0),
+    );
     let d = run(&s);
     assert_eq!(d.outcome, Outcome::RedundantOkay);
     assert_eq!(d.redundant[0].members, cs(&[7, 4]));
@@ -127,15 +178,44 @@ fn square_with_both_horizontals_and_a_fourth_perpendicular_is_redundant() {
     for (h, a, b) in [(11, 1, 2), (12, 2, 3), (13, 3, 4), (14, 4, 1)] {
         line(&mut s, h, a, b);
     }
-    add(&mut s, Constraint::new(1, 2, K::WhereDragged).with_points(1, 0));
-    add(&mut s, Constraint::new(2, 2, K::Horizontal).with_entities([11, 0, 0, 0]));
-    add(&mut s, Constraint::new(3, 2, K::Horizontal).with_entities([13, 0, 0, 0]));
-    add(&mut s, Constraint::new(4, 2, K::Perpendicular).with_entities([11, 12, 0, 0]));
-    add(&mut s, Constraint::new(5, 2, K::Perpendicular).with_entities([12, 13, 0, 0]));
-    add(&mut s, Constraint::new(6, 2, K::Perpendicular).with_entities([13, 14, 0, 0]));
-    add(&mut s, Constraint::new(7, 2, K::Perpendicular).with_entities([14, 11, 0, 0]));
-    add(&mut s, Constraint::new(8, 2, K::PtPtDistance).with_points(1, 2).with_val(10.0));
-    add(&mut s, Constraint::new(9, 2, K::EqualLengthLines).with_entities([11, 12, 0, 0]));
+    add(
+        &mut s,
+        Constraint::new(1, 2, K::WhereDragged).with_points(1, 0),
+    );
+    add(
+        &mut s,
+        Constraint::new(2, 2, K::Horizontal).with_entities([11, 0, 0, 0]),
+    );
+    add(
+        &mut s,
+        Constraint::new(3, 2, K::Horizontal).with_entities([13, 0, 0, 0]),
+    );
+    add(
+        &mut s,
+        Constraint::new(4, 2, K::Perpendicular).with_entities([11, 12, 0, 0]),
+    );
+    add(
+        &mut s,
+        Constraint::new(5, 2, K::Perpendicular).with_entities([12, 13, 0, 0]),
+    );
+    add(
+        &mut s,
+        Constraint::new(6, 2, K::Perpendicular).with_entities([13, 14, 0, 0]),
+    );
+    add(
+        &mut s,
+        Constraint::new(7, 2, K::Perpendicular).with_entities([14, 11, 0, 0]),
+    );
+    add(
+        &mut s,
+        Constraint::new(8, 2, K::PtPtDistance)
+            .with_points(1, 2)
+            .with_val(10.0),
+    );
+    add(
+        &mut s,
+        Constraint::new(9, 2, K::EqualLengthLines).with_entities([11, 12, 0, 0]),
+    );
     let d = run(&s);
     assert_eq!(d.outcome, Outcome::RedundantOkay);
     assert_eq!(d.dof, 0);
@@ -154,10 +234,22 @@ fn a_cycle_of_coincident_points_is_redundant_as_a_whole() {
     pt(&mut s, 1, 0.0, 0.0);
     pt(&mut s, 2, 0.1, 0.0);
     pt(&mut s, 3, 0.0, 0.2);
-    add(&mut s, Constraint::new(1, 2, K::PointsCoincident).with_points(1, 2));
-    add(&mut s, Constraint::new(2, 2, K::PointsCoincident).with_points(2, 3));
-    add(&mut s, Constraint::new(3, 2, K::PointsCoincident).with_points(3, 1));
-    add(&mut s, Constraint::new(4, 2, K::WhereDragged).with_points(1, 0));
+    add(
+        &mut s,
+        Constraint::new(1, 2, K::PointsCoincident).with_points(1, 2),
+    );
+    add(
+        &mut s,
+        Constraint::new(2, 2, K::PointsCoincident).with_points(2, 3),
+    );
+    add(
+        &mut s,
+        Constraint::new(3, 2, K::PointsCoincident).with_points(3, 1),
+    );
+    add(
+        &mut s,
+        Constraint::new(4, 2, K::WhereDragged).with_points(1, 0),
+    );
     let d = run(&s);
     assert_eq!(d.outcome, Outcome::RedundantOkay);
     assert_eq!(d.redundant.len(), 1);
@@ -174,18 +266,40 @@ fn a_duplicated_constraint_is_redundant_and_a_contradicting_copy_conflicts() {
         let mut s = plane();
         pt(&mut s, 1, 0.0, 0.0);
         pt(&mut s, 2, 4.0, 3.0);
-        add(&mut s, Constraint::new(1, 2, K::WhereDragged).with_points(1, 0));
-        add(&mut s, Constraint::new(2, 2, K::PtPtDistance).with_points(1, 2).with_val(5.0));
-        add(&mut s, Constraint::new(3, 2, K::PtPtDistance).with_points(1, 2).with_val(val));
+        add(
+            &mut s,
+            Constraint::new(1, 2, K::WhereDragged).with_points(1, 0),
+        );
+        add(
+            &mut s,
+            Constraint::new(2, 2, K::PtPtDistance)
+                .with_points(1, 2)
+                .with_val(5.0),
+        );
+        add(
+            &mut s,
+            Constraint::new(3, 2, K::PtPtDistance)
+                .with_points(1, 2)
+                .with_val(val),
+        );
         let d = run(&s);
         if redundant {
             assert_eq!(d.outcome, Outcome::RedundantOkay);
             assert_eq!(d.redundant[0].members, cs(&[3, 2]));
-            assert_eq!(d.redundant[0].to_string(), "one of {constraint 3, constraint 2} is redundant");
+            assert_eq!(
+                d.redundant[0].to_string(),
+                "one of {constraint 3, constraint 2} is redundant"
+            );
             assert!(d.conflicting.is_empty());
         } else {
             assert_eq!(d.outcome, Outcome::Inconsistent);
-            assert_eq!(d.conflicting, vec![ConflictSet { members: cs(&[3, 2]), verified: true }]);
+            assert_eq!(
+                d.conflicting,
+                vec![ConflictSet {
+                    members: cs(&[3, 2]),
+                    verified: true
+                }]
+            );
             assert!(d.redundant.is_empty());
         }
         // The point still turns about point 1.
@@ -229,21 +343,35 @@ fn a_chain_turns_about_its_first_point() {
         format!("line {l0}: free to rotate about its start (entity {a0})")
     );
     // Every other point and line moves too, with the one rotation.
-    assert!(d.freedoms.iter().filter(|f| f.entity.0 != a0).all(|f| f.dof == 1));
+    assert!(d
+        .freedoms
+        .iter()
+        .filter(|f| f.entity.0 != a0)
+        .all(|f| f.dof == 1));
 }
 
 #[test]
 fn counting_finds_three_equations_on_a_two_coordinate_point() {
     let mut s = plane();
     pt(&mut s, 1, 1.0, 1.0);
-    add(&mut s, Constraint::new(1, 2, K::WhereDragged).with_points(1, 0));
+    add(
+        &mut s,
+        Constraint::new(1, 2, K::WhereDragged).with_points(1, 0),
+    );
     // A distance to the workplane's origin (a constant of group 1).
-    s.add_constraint(Constraint::new(2, 2, K::PtPtDistance).with_points(1, 101).with_val(2.0f64.sqrt()))
-        .unwrap();
+    s.add_constraint(
+        Constraint::new(2, 2, K::PtPtDistance)
+            .with_points(1, 101)
+            .with_val(2.0f64.sqrt()),
+    )
+    .unwrap();
     let d = run(&s);
     assert_eq!(d.structural.len(), 1);
     assert_eq!(d.structural[0].members, cs(&[2, 1]));
-    assert_eq!((d.structural[0].equations, d.structural[0].unknowns), (3, 2));
+    assert_eq!(
+        (d.structural[0].equations, d.structural[0].unknowns),
+        (3, 2)
+    );
     assert_eq!(d.outcome, Outcome::RedundantOkay);
 }
 
@@ -252,16 +380,36 @@ fn reference_constraints_measure_and_do_not_constrain() {
     let mut s = triangle(2.4);
     s.remove_constraint(ConstraintId(6));
     let r = |c: Constraint| c.in_workplane(Some(WP)).as_reference();
-    s.add_constraint(r(Constraint::new(10, 2, K::PtPtDistance).with_points(2, 3).with_val(1.0))).unwrap();
-    s.add_constraint(r(Constraint::new(11, 2, K::Angle).with_entities([12, 23, 0, 0]))).unwrap();
-    s.add_constraint(r(Constraint::new(12, 2, K::Angle).with_entities([12, 23, 0, 0]).with_flags(true, false)))
+    s.add_constraint(r(Constraint::new(10, 2, K::PtPtDistance)
+        .with_points(2, 3)
+        .with_val(1.0)))
         .unwrap();
-    s.add_constraint(r(Constraint::new(13, 2, K::LengthRatio).with_entities([23, 12, 0, 0]))).unwrap();
+    s.add_constraint(r(
+        Constraint::new(11, 2, K::Angle).with_entities([12, 23, 0, 0])
+    ))
+    .unwrap();
+    s.add_constraint(r(Constraint::new(12, 2, K::Angle)
+        .with_entities([12, 23, 0, 0])
+        .with_flags(true, false)))
+        .unwrap();
+    s.add_constraint(r(
+        Constraint::new(13, 2, K::LengthRatio).with_entities([23, 12, 0, 0])
+    ))
+    .unwrap();
     let d = run(&s);
     assert_eq!(d.outcome, Outcome::Okay);
     assert_eq!(d.dof, 0);
-    let m: Vec<(u32, f64)> = d.measurements.iter().map(|m| (m.constraint.0, m.value)).collect();
-    let expect = [(10, 5.0), (11, 126.869_897_645_844), (12, 53.130_102_354_156), (13, 5.0 / 3.0)];
+    let m: Vec<(u32, f64)> = d
+        .measurements
+        .iter()
+        .map(|m| (m.constraint.0, m.value))
+        .collect();
+    let expect = [
+        (10, 5.0),
+        (11, 126.869_897_645_844),
+        (12, 53.130_102_354_156),
+        (13, 5.0 / 3.0),
+    ];
     assert_eq!(m.len(), expect.len());
     for ((h, v), (eh, ev)) in m.iter().zip(expect) {
         assert_eq!(*h, eh);
@@ -290,7 +438,12 @@ fn random_system(coords: Vec<(i8, i8)>, picks: Vec<(u8, u8, u8, u8, bool)>) -> S
     for i in 1..n {
         line(&mut s, 300 + i, i, i + 1);
     }
-    let pos = |s: &System, p: u32| (s.value((10 * p).into()).unwrap(), s.value((10 * p + 1).into()).unwrap());
+    let pos = |s: &System, p: u32| {
+        (
+            s.value((10 * p).into()).unwrap(),
+            s.value((10 * p + 1).into()).unwrap(),
+        )
+    };
     for (c, &(kind, a, b, l, agree)) in picks.iter().enumerate() {
         let h = c as u32 + 1;
         let (a, b) = (a as u32 % n + 1, b as u32 % n + 1);
@@ -302,14 +455,22 @@ fn random_system(coords: Vec<(i8, i8)>, picks: Vec<(u8, u8, u8, u8, bool)>) -> S
             1 => {
                 let (pa, pb) = (pos(&s, a), pos(&s, b));
                 let dist = ((pa.0 - pb.0).powi(2) + (pa.1 - pb.1).powi(2)).sqrt();
-                let v = if agree { dist } else { dist + 1.0 + l as f64 % 3.0 };
-                Constraint::new(h, 2, K::PtPtDistance).with_points(a, b).with_val(v)
+                let v = if agree {
+                    dist
+                } else {
+                    dist + 1.0 + l as f64 % 3.0
+                };
+                Constraint::new(h, 2, K::PtPtDistance)
+                    .with_points(a, b)
+                    .with_val(v)
             }
             2 => Constraint::new(h, 2, K::Horizontal).with_points(a, b),
             3 => Constraint::new(h, 2, K::Vertical).with_points(a, b),
             4 => Constraint::new(h, 2, K::PointsCoincident).with_points(a, b),
             5 if nl >= 2 => Constraint::new(h, 2, K::Perpendicular).with_entities([la, lb, 0, 0]),
-            6 => Constraint::new(h, 2, K::PtOnLine).with_points(a, 0).with_entities([la, 0, 0, 0]),
+            6 => Constraint::new(h, 2, K::PtOnLine)
+                .with_points(a, 0)
+                .with_entities([la, 0, 0, 0]),
             _ => Constraint::new(h, 2, K::Vertical).with_entities([la, 0, 0, 0]),
         };
         add(&mut s, k);

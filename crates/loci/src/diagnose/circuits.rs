@@ -55,7 +55,12 @@ impl Rank {
 const COEFF_EPS: f64 = 1e-6;
 
 /// The fundamental circuit of every dropped row, classified as conflicting or redundant.
-pub(crate) fn circuits(eqs: &Equations, lin: &Linear, rank: &mut Rank, cfg: &Config) -> Vec<Circuit> {
+pub(crate) fn circuits(
+    eqs: &Equations,
+    lin: &Linear,
+    rank: &mut Rank,
+    cfg: &Config,
+) -> Vec<Circuit> {
     let m = eqs.rows;
     let mut b = vec![0.0; m];
     let mut out = Vec::with_capacity(rank.dropped.len());

@@ -11,11 +11,11 @@
 //! the cost of a handful of sparse solves for the whole sketch.
 
 use super::circuits::Rank;
+use super::eigen::symmetric_eigen;
 use super::motion::{direction, direction3, Motion};
 use super::report::EntityFreedom;
 use super::unmerged::{Equations, Linear, CONSTANT};
 use crate::model::{EntityId, EntityKind, GroupId, ParamId, System};
-use super::eigen::symmetric_eigen;
 use std::cell::RefCell;
 use std::collections::HashMap;
 use std::rc::Rc;
@@ -43,7 +43,12 @@ impl SplitMix {
 }
 
 /// Orthonormal vectors (over the columns) spanning or sampling the null space of `Jn`.
-pub(crate) fn sketch(eqs: &Equations, lin: &Linear, mut rank: Option<&mut Rank>, dof: usize) -> Vec<Vec<f64>> {
+pub(crate) fn sketch(
+    eqs: &Equations,
+    lin: &Linear,
+    mut rank: Option<&mut Rank>,
+    dof: usize,
+) -> Vec<Vec<f64>> {
     let n = eqs.columns.len();
     if dof == 0 || n == 0 {
         return Vec::new();
@@ -135,7 +140,11 @@ impl Span {
                 break;
             }
             let u: Vec<f64> = (0..p).map(|r| vecs[r * p + i]).collect();
-            out.weights.push((0..k).map(|c| (0..p).map(|r| w(r, c) * u[r]).sum::<f64>() / l).collect());
+            out.weights.push(
+                (0..k)
+                    .map(|c| (0..p).map(|r| w(r, c) * u[r]).sum::<f64>() / l)
+                    .collect(),
+            );
             out.basis.push(u);
         }
         out
@@ -192,8 +201,10 @@ impl Ctx<'_> {
             EntityKind::NormalIn3d { params } => params.iter().for_each(|&p| push(p, out)),
             EntityKind::Distance { param } => push(*param, out),
             EntityKind::NormalIn2d => {
-                if let Some(EntityKind::Workplane { normal, .. }) =
-                    e.workplane.and_then(|w| self.sys.entity(w)).map(|w| &w.kind)
+                if let Some(EntityKind::Workplane { normal, .. }) = e
+                    .workplane
+                    .and_then(|w| self.sys.entity(w))
+                    .map(|w| &w.kind)
                 {
                     self.params(*normal, out, depth + 1);
                 }
@@ -249,7 +260,11 @@ impl Ctx<'_> {
         self.params(h, &mut own, 0);
         match &e.kind {
             EntityKind::PointIn2d { .. } | EntityKind::PointIn3d { .. } => {
-                let b: Vec<Vec<f64>> = span.basis.iter().map(|v| self.embed(&own, params, v)).collect();
+                let b: Vec<Vec<f64>> = span
+                    .basis
+                    .iter()
+                    .map(|v| self.embed(&own, params, v))
+                    .collect();
                 match (own.len(), r) {
                     (_, 1) => vec![Motion::Along {
                         direction: direction(&b[0]),
@@ -322,7 +337,12 @@ impl Ctx<'_> {
     }
 
     /// A line with one motion: a pivot about an end, a slide, or a change of length.
-    fn line_motion(&self, points: [EntityId; 2], span: &Span, params: &[ParamId]) -> Option<Motion> {
+    fn line_motion(
+        &self,
+        points: [EntityId; 2],
+        span: &Span,
+        params: &[ParamId],
+    ) -> Option<Motion> {
         let own: Vec<Vec<ParamId>> = points
             .iter()
             .map(|&p| {
@@ -344,9 +364,13 @@ impl Ctx<'_> {
         let (na, nb, nd) = (norm(&da), norm(&db), norm(&d));
         const EPS: f64 = 1e-6;
         let along = |v: &[f64], nv: f64| {
-            nd > 0.0 && (v.iter().zip(&d).map(|(a, b)| a * b).sum::<f64>().abs() - nv * nd).abs() <= EPS * nv * nd
+            nd > 0.0
+                && (v.iter().zip(&d).map(|(a, b)| a * b).sum::<f64>().abs() - nv * nd).abs()
+                    <= EPS * nv * nd
         };
-        let across = |v: &[f64], nv: f64| nd > 0.0 && v.iter().zip(&d).map(|(a, b)| a * b).sum::<f64>().abs() <= EPS * nv * nd;
+        let across = |v: &[f64], nv: f64| {
+            nd > 0.0 && v.iter().zip(&d).map(|(a, b)| a * b).sum::<f64>().abs() <= EPS * nv * nd
+        };
         let end = |i: usize| if i == 0 { "start" } else { "end" }.to_string();
         for (i, (still, moving, nm)) in [(na, &db, nb), (nb, &da, na)].into_iter().enumerate() {
             if still <= EPS * nm {
@@ -388,7 +412,11 @@ fn parts(kind: &EntityKind) -> Vec<(&'static str, EntityId)> {
             center,
             normal,
             radius,
-        } => vec![("centre", *center), ("normal", *normal), ("radius", *radius)],
+        } => vec![
+            ("centre", *center),
+            ("normal", *normal),
+            ("radius", *radius),
+        ],
         EntityKind::ArcOfCircle {
             normal,
             center,

@@ -4,7 +4,7 @@
 use super::report::Member;
 use super::unmerged::{Equations, CONSTANT};
 use crate::equations::Rows;
-use crate::solve::newton::Component;
+use crate::solve::newton::{Component, Scratch};
 use crate::solve::Config;
 use std::collections::HashMap;
 
@@ -48,13 +48,19 @@ pub(crate) fn consistent(eqs: &Equations, kernels: &[usize], values: &[f64], cfg
         .collect();
     // From where the solve stopped, then from a generic point nearby: a stop at degenerate
     // geometry (a line collapsed to a point) says nothing about whether the set can hold.
+    let mut scratch = Scratch::default();
     for nudge in [0.0, 1e-3] {
         let mut x: Vec<f64> = x0
             .iter()
             .enumerate()
-            .map(|(i, v)| v + nudge * (1.0 + v.abs()) * (((i as f64 + 1.0) * 0.618_034).fract() - 0.5))
+            .map(|(i, v)| {
+                v + nudge * (1.0 + v.abs()) * (((i as f64 + 1.0) * 0.618_034).fract() - 0.5)
+            })
             .collect();
-        if comp.solve(&eqs.kernels, &mut x, values, cfg).converged {
+        if comp
+            .solve(&eqs.kernels, &mut x, values, cfg, &mut scratch)
+            .converged
+        {
             return true;
         }
     }

@@ -204,7 +204,9 @@ fn conflict_sets(
     cfg: &Config,
 ) -> Vec<ConflictSet> {
     let members_of = |rows: &mut dyn Iterator<Item = usize>| {
-        let mut m: Vec<Member> = rows.map(|r| eqs.member(eqs.row_kernel[r] as usize)).collect();
+        let mut m: Vec<Member> = rows
+            .map(|r| eqs.member(eqs.row_kernel[r] as usize))
+            .collect();
         m.sort_by(Member::report_order);
         m.dedup();
         m

@@ -135,7 +135,11 @@ pub(crate) fn direction(v: &[f64]) -> Vec<f64> {
     if n == 0.0 {
         return v.to_vec();
     }
-    let first = v.iter().find(|x| x.abs() > 1e-9 * n).copied().unwrap_or(1.0);
+    let first = v
+        .iter()
+        .find(|x| x.abs() > 1e-9 * n)
+        .copied()
+        .unwrap_or(1.0);
     let s = if first < 0.0 { -1.0 / n } else { 1.0 / n };
     v.iter().map(|x| x * s).collect()
 }

@@ -145,7 +145,9 @@ pub(crate) fn over_constrained(eqs: &Equations, adj: &[Vec<u32>]) -> Vec<OverCon
     if parent.is_empty() {
         return Vec::new();
     }
-    let roots: Vec<u32> = (0..parent.len() as u32).map(|l| find(&mut parent, l)).collect();
+    let roots: Vec<u32> = (0..parent.len() as u32)
+        .map(|l| find(&mut parent, l))
+        .collect();
     let mut blocks: Vec<(Vec<usize>, usize)> = vec![(Vec::new(), 0); parent.len()];
     for (r, &l) in label.iter().enumerate() {
         if l != NONE {

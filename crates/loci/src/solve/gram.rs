@@ -20,29 +20,23 @@ use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 
+use super::dense::DenseLdlt;
+
 /// The value a dropped pivot is replaced by.
 const DROPPED: f64 = 1e150;
 
-/// `G = J Jᵀ` for one component, with its factorisation.
-pub(crate) struct Gram {
-    n: usize,
-    pattern: SymbolicSparseColMat<usize>,
-    vals: Vec<f64>,
+/// The structure of `G = J Jᵀ`: an upper-triangular CSC pattern, and for every product of two
+/// Jacobian entries the entry of `G` it adds to.
+struct Pattern {
+    col_ptr: Vec<usize>,
+    row_idx: Vec<usize>,
     /// `(entry of G, entry of J, entry of J)`: `G[e] += J[a] * J[b]`.
     contrib: Vec<(u32, u32, u32)>,
-    symbolic: SymbolicCholesky<usize>,
-    l_values: Vec<f64>,
-    signs: Vec<i8>,
-    shifted: Vec<f64>,
-    /// Position of each diagonal entry in `vals`: the last of its column (rows are sorted).
-    diag: Vec<usize>,
-    mem: MemBuffer,
 }
 
-impl Gram {
-    /// Builds the structure from the nonzeros of `J`, given column by column as lists of
-    /// `(row, index into J's values)`.
-    pub fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Option<Self> {
+impl Pattern {
+    /// From the nonzeros of `J`, given column by column as `(row, index into J's values)`.
+    fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Self {
         // Rows of J with their columns: row i -> [(column, index into J's values)].
         let mut row_ptr = vec![0usize; nrows + 1];
         for col in columns {
@@ -102,6 +96,101 @@ impl Gram {
             }
             col_ptr[i + 1] = row_idx.len();
         }
+        Self { col_ptr, row_idx, contrib }
+    }
+}
+
+/// Components up to this many equations use the dense factorisation.
+const DENSE_MAX: usize = 24;
+
+/// `G = J Jᵀ` of one component and its rank-revealing factorisation, dense or sparse by size.
+pub(crate) enum Gram {
+    Dense { g: DenseLdlt, contrib: Vec<(u32, u32, u32)> },
+    Sparse(SparseGram),
+}
+
+impl Gram {
+    /// Builds the structure from the nonzeros of `J`, given column by column as lists of
+    /// `(row, index into J's values)`.
+    pub fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Option<Self> {
+        let p = Pattern::new(nrows, columns);
+        if nrows <= DENSE_MAX {
+            let g = DenseLdlt::new(nrows);
+            let mut col_of = vec![0usize; p.row_idx.len()];
+            for c in 0..nrows {
+                for e in p.col_ptr[c]..p.col_ptr[c + 1] {
+                    col_of[e] = c;
+                }
+            }
+            let contrib = p
+                .contrib
+                .iter()
+                .map(|&(e, a, b)| (g.index(p.row_idx[e as usize], col_of[e as usize]) as u32, a, b))
+                .collect();
+            return Some(Gram::Dense { g, contrib });
+        }
+        SparseGram::new(nrows, p).map(Gram::Sparse)
+    }
+
+    /// Computes `G` from the Jacobian values `jv`.
+    pub fn assemble(&mut self, jv: &[f64]) {
+        match self {
+            Gram::Dense { g, contrib } => {
+                let v = g.values_mut();
+                v.iter_mut().for_each(|x| *x = 0.0);
+                for &(e, a, b) in contrib.iter() {
+                    v[e as usize] += jv[a as usize] * jv[b as usize];
+                }
+            }
+            Gram::Sparse(s) => s.assemble(jv),
+        }
+    }
+
+    /// Factorises `G + lambda I`; pivots at or below `eps` are dropped. Returns false when the
+    /// factorisation failed numerically.
+    pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
+        match self {
+            Gram::Dense { g, .. } => g.factor(lambda, eps),
+            Gram::Sparse(s) => s.factor(lambda, eps),
+        }
+    }
+
+    /// The rows whose pivots were dropped in the last factorisation, ascending.
+    pub fn dropped(&self) -> Vec<usize> {
+        match self {
+            Gram::Dense { g, .. } => g.dropped(),
+            Gram::Sparse(s) => s.dropped(),
+        }
+    }
+
+    /// Solves `G y = rhs` in place with the last factorisation.
+    pub fn solve(&mut self, rhs: &mut [f64]) {
+        match self {
+            Gram::Dense { g, .. } => g.solve(rhs),
+            Gram::Sparse(s) => s.solve(rhs),
+        }
+    }
+}
+
+/// `G = J Jᵀ` for one component, with its sparse factorisation.
+pub(crate) struct SparseGram {
+    n: usize,
+    pattern: SymbolicSparseColMat<usize>,
+    vals: Vec<f64>,
+    /// `(entry of G, entry of J, entry of J)`: `G[e] += J[a] * J[b]`.
+    contrib: Vec<(u32, u32, u32)>,
+    symbolic: SymbolicCholesky<usize>,
+    l_values: Vec<f64>,
+    signs: Vec<i8>,
+    shifted: Vec<f64>,
+    /// Position of each diagonal entry in `vals`: the last of its column (rows are sorted).
+    diag: Vec<usize>,
+    mem: MemBuffer,
+}
+
+impl SparseGram {
+    fn new(nrows: usize, pattern: Pattern) -> Option<Self> {
+        let Pattern { col_ptr, row_idx, contrib } = pattern;
         let nnz = row_idx.len();
         let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();
         let pattern = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);

@@ -11,6 +11,7 @@
 //!    redundant or conflicting constraints.
 
 mod config;
+mod dense;
 pub(crate) mod gram;
 pub(crate) mod newton;
 mod report;
@@ -41,7 +42,87 @@ pub fn solve(
     dragged: &[ParamId],
     cfg: &Config,
 ) -> Result<Report, SolveError> {
-    let (mut report, values) = solve_core(sys, group, dragged, cfg)?;
+    cfg.check()?;
+    sys.validate()?;
+    solve_cached(sys, group, dragged, cfg, &mut Cache::default())
+}
+
+/// Solves `group` without touching `sys`: the report, and the value of every parameter where
+/// the solve stopped (in [`System::params`] order), whether or not it succeeded.
+pub(crate) fn solve_core(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+) -> Result<(Report, Vec<f64>), SolveError> {
+    cfg.check()?;
+    sys.validate()?;
+    solve_values(sys, group, dragged, cfg, &mut Cache::default())
+}
+
+/// What a [`Solver`] keeps between solves of a system whose structure has not changed: the
+/// compiled equations (with the branches they chose) and each component with its symbolic
+/// factorisation.
+#[derive(Default)]
+struct Cache {
+    /// Counts of params, entities and constraints when the cache was built.
+    shape: Option<(usize, usize, usize)>,
+    links: Vec<Compiled>,
+    kernels: Vec<crate::equations::Kernel>,
+    components: Vec<Component>,
+}
+
+/// A reusable solver for one group: the first solve compiles the equations, splits them into
+/// components and analyses each component's sparsity; later solves of the same system (after
+/// the user drags a point, moves a fixed point or edits a dimension) reuse all of it.
+///
+/// Values may change freely between solves: parameter values, constraint values (`val`). After
+/// adding or removing objects or changing what references what, call [`Solver::invalidate`]
+/// (a change in the number of params, entities or constraints is detected). Branches chosen from
+/// the starting configuration (the sign of a 2D angle, `where_dragged` targets of points that are
+/// not in their constraint's workplane) are kept from the first solve.
+pub struct Solver {
+    group: GroupId,
+    dragged: Vec<ParamId>,
+    cfg: Config,
+    cache: Cache,
+}
+
+impl Solver {
+    /// A solver for `group`, with `dragged` parameters moving least.
+    #[must_use]
+    pub fn new(group: impl Into<GroupId>, dragged: &[ParamId], cfg: Config) -> Self {
+        Self { group: group.into(), dragged: dragged.to_vec(), cfg, cache: Cache::default() }
+    }
+
+    /// Forgets the compiled structure; the next solve rebuilds it.
+    pub fn invalidate(&mut self) {
+        self.cache = Cache::default();
+    }
+
+    /// Solves the group in place, reusing the structure from earlier solves.
+    ///
+    /// # Errors
+    /// As [`solve`].
+    pub fn solve(&mut self, sys: &mut System) -> Result<Report, SolveError> {
+        let shape = (sys.params().len(), sys.entities().len(), sys.constraints().len());
+        if self.cache.shape != Some(shape) {
+            self.cfg.check()?;
+            sys.validate()?;
+            self.cache = Cache::default();
+        }
+        solve_cached(sys, self.group, &self.dragged, &self.cfg, &mut self.cache)
+    }
+}
+
+fn solve_cached(
+    sys: &mut System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    cache: &mut Cache,
+) -> Result<Report, SolveError> {
+    let (mut report, values) = solve_values(sys, group, dragged, cfg, cache)?;
     if report.outcome == Outcome::Inconsistent && cfg.find_failed {
         // Name the minimal sets that cannot hold together, found on the unmerged equations
         // where the solve stopped; only failures pay for it.
@@ -61,16 +142,14 @@ pub fn solve(
     Ok(report)
 }
 
-/// Solves `group` without touching `sys`: the report, and the value of every parameter where
-/// the solve stopped (in [`System::params`] order), whether or not it succeeded.
-pub(crate) fn solve_core(
+/// The solve itself: the report and the value of every parameter where it stopped.
+fn solve_values(
     sys: &System,
     group: GroupId,
     dragged: &[ParamId],
     cfg: &Config,
+    cache: &mut Cache,
 ) -> Result<(Report, Vec<f64>), SolveError> {
-    cfg.check()?;
-    sys.validate()?;
     let params = sys.params();
     let np = params.len();
     let mut values: Vec<f64> = params.iter().map(|p| p.val).collect();
@@ -80,14 +159,26 @@ pub(crate) fn solve_core(
         let i = sys.param_index(*h).ok_or(SolveError::UnknownDragged(h.0))?;
         is_dragged[i] = true;
     }
-    let compiled = compile_group(sys, group, &values)?;
+    let shape = (np, sys.entities().len(), sys.constraints().len());
+    if cache.shape != Some(shape) {
+        *cache = Cache::default();
+        for c in compile_group(sys, group, &values)? {
+            match c {
+                Compiled::Kernel(k) => cache.kernels.push(k),
+                link => cache.links.push(link),
+            }
+        }
+        cache.shape = Some(shape);
+    } else {
+        refresh(sys, &values, cache);
+    }
+    let kernels = &cache.kernels;
     let tol = cfg.tolerance;
 
     // 2. Substitution.
     let mut sub = Substitution::new(np);
-    let mut kernels = Vec::new();
-    for c in compiled {
-        match c {
+    for c in &cache.links {
+        match *c {
             Compiled::Equal { owner, a, b } => match (unknown[a], unknown[b]) {
                 (true, true) => sub.merge(a, b, owner, tol),
                 (true, false) => sub.fix(a, values[b], owner, tol),
@@ -101,7 +192,7 @@ pub(crate) fn solve_core(
                     sub.constant((values[p] - value).abs() <= tol, owner);
                 }
             }
-            Compiled::Kernel(k) => kernels.push(k),
+            Compiled::Kernel(_) => {}
         }
     }
     // Starting value of each merged set: the mean of its dragged members if any, else of all.
@@ -156,7 +247,7 @@ pub(crate) fn solve_core(
         let c = col_of_root[root_of[p]];
         (c != u32::MAX).then_some(c)
     };
-    for k in &kernels {
+    for k in kernels {
         for &p in &k.locals {
             let p = p as usize;
             if unknown[p] && fixed[p].is_none() && col_of_root[root_of[p]] == u32::MAX {
@@ -241,14 +332,18 @@ pub(crate) fn solve_core(
     let mut conflicting: Vec<Owner> = Vec::new();
     let mut unsatisfied: Vec<Owner> = Vec::new();
     let mut x_all: Vec<f64> = col_root.iter().map(|&r| start[r]).collect();
-    for (members, cols) in &comps {
-        let local: Vec<u32> = {
-            let mut v = vec![u32::MAX; ncols];
-            for (i, &c) in cols.iter().enumerate() {
-                v[c] = i as u32;
-            }
-            v
-        };
+    // Column -> position within its component; set per component and reset after, so the
+    // cost stays linear in the number of components.
+    let mut local = vec![u32::MAX; ncols];
+    let mut scratch = newton::Scratch::default();
+    let reuse = cache.components.len() == comps.len();
+    if !reuse {
+        cache.components.clear();
+    }
+    for (ci, (members, cols)) in comps.iter().enumerate() {
+        for (i, &c) in cols.iter().enumerate() {
+            local[c] = i as u32;
+        }
         let scale: Vec<f64> = cols
             .iter()
             .map(|&c| {
@@ -260,9 +355,15 @@ pub(crate) fn solve_core(
             })
             .collect();
         let map = |p: usize| col_of_param(p, &col_of_root).map(|c| local[c as usize]);
-        let mut comp = Component::new(&kernels, members, &map, cols.len(), scale);
+        if !reuse {
+            cache.components.push(Component::new(kernels, members, &map, cols.len(), scale));
+        }
+        let comp = &mut cache.components[ci];
+        for &c in cols {
+            local[c] = u32::MAX;
+        }
         let mut x: Vec<f64> = cols.iter().map(|&c| x_all[c]).collect();
-        let fin = comp.solve(&kernels, &mut x, &values, cfg);
+        let fin = comp.solve(kernels, &mut x, &values, cfg, &mut scratch);
         report.iterations = report.iterations.max(fin.iterations);
         report.residual = report.residual.max(fin.residual);
         rank_total += comp.rows - fin.dropped.len();
@@ -348,6 +449,28 @@ pub(crate) fn solve_core(
         }
     }
     Ok((report, out))
+}
+
+/// Brings cached equations up to date with the system's current values: constraint values,
+/// and the values that `where_dragged` and circle diameters fix parameters at.
+fn refresh(sys: &System, values: &[f64], cache: &mut Cache) {
+    for k in &mut cache.kernels {
+        if let Owner::Constraint(h) = k.owner {
+            if let Some(c) = sys.constraint(h) {
+                k.eq.val = c.val;
+            }
+        }
+    }
+    for l in &mut cache.links {
+        if let Compiled::Fix { owner: Owner::Constraint(h), p, value } = l {
+            if let Some(c) = sys.constraint(*h) {
+                *value = match c.kind {
+                    crate::model::ConstraintKind::Diameter => c.val / 2.0,
+                    _ => values[*p],
+                };
+            }
+        }
+    }
 }
 
 impl System {

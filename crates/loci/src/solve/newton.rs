@@ -35,6 +35,24 @@ pub(crate) struct Finish {
     pub residual: f64,
 }
 
+/// Work vectors reused across components, so that many small components cost no allocations.
+#[derive(Default)]
+pub(crate) struct Scratch {
+    r: Vec<f64>,
+    jv: Vec<f64>,
+    jn: Vec<f64>,
+    inv: Vec<f64>,
+    y: Vec<f64>,
+    dx: Vec<f64>,
+    xt: Vec<f64>,
+    rt: Vec<f64>,
+    xs: Vec<f64>,
+    jl: Vec<f64>,
+}
+
+/// How many past merits the line search compares a step with.
+const NONMONOTONE: usize = 4;
+
 /// A component ready to solve repeatedly.
 pub(crate) struct Component {
     pub blocks: Vec<Block>,
@@ -180,6 +198,7 @@ impl Component {
         x: &mut [f64],
         values: &[f64],
         cfg: &Config,
+        scratch: &mut Scratch,
     ) -> Finish {
         let m = self.rows;
         let ncols = x.len();
@@ -187,15 +206,17 @@ impl Component {
             self.gram = Gram::new(m, &self.columns);
         }
         let mut gram_slot = self.gram.take();
-        let mut r = vec![0.0; m];
-        let mut jv = vec![0.0; self.nnz];
-        let mut jn = vec![0.0; self.nnz];
-        let mut inv = vec![0.0; m];
-        let mut y = vec![0.0; m];
-        let mut dx = vec![0.0; ncols];
-        let mut xt = vec![0.0; ncols];
-        let mut rt = vec![0.0; m];
-        let (mut xs, mut jl) = (Vec::new(), Vec::new());
+        let Scratch { r, jv, jn, inv, y, dx, xt, rt, xs, jl } = scratch;
+        for (v, n) in [(&mut *r, m), (&mut *jv, self.nnz), (&mut *jn, self.nnz), (&mut *inv, m), (&mut *y, m)] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        for (v, n) in [(&mut *dx, ncols), (&mut *xt, ncols), (&mut *rt, m)] {
+            v.clear();
+            v.resize(n, 0.0);
+        }
+        let (r, jv, jn, inv, y, dx, xt, rt) =
+            (&mut r[..], &mut jv[..], &mut jn[..], &mut inv[..], &mut y[..], &mut dx[..], &mut xt[..], &mut rt[..]);
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
@@ -204,8 +225,11 @@ impl Component {
         // problem that needs short steps (a long chain turning far) does not pay for failed
         // full steps every iteration.
         let mut alpha_prev = 1.0f64;
+        // Levenberg-Marquardt damping, once plain Newton steps stop reducing the residual.
+        let mut damping: Option<f64> = None;
+        let mut history: Vec<f64> = Vec::new();
         loop {
-            self.jacobian(kernels, x, values, &mut r, &mut jv, &mut xs, &mut jl);
+            self.jacobian(kernels, x, values, r, jv, xs, jl);
             // Normalise rows of J S so the pivots of G measure independence, not units.
             inv.iter_mut().for_each(|v| *v = 0.0);
             for (c, col) in self.columns.iter().enumerate() {
@@ -216,7 +240,7 @@ impl Component {
                     inv[row as usize] += v * v;
                 }
             }
-            for v in &mut inv {
+            for v in inv.iter_mut() {
                 *v = if *v > 0.0 { 1.0 / v.sqrt() } else { 0.0 };
             }
             for col in &self.columns {
@@ -236,35 +260,74 @@ impl Component {
                 break;
             }
             iterations += 1;
-            for i in 0..m {
-                y[i] = -r[i] * inv[i];
-            }
-            gram.solve(&mut y);
-            for (c, col) in self.columns.iter().enumerate() {
-                let mut acc = 0.0;
-                for &(row, idx) in col {
-                    acc += jn[idx as usize] * y[row as usize];
+            let step = |gram: &mut Gram, y: &mut [f64], dx: &mut [f64]| {
+                for i in 0..m {
+                    y[i] = -r[i] * inv[i];
                 }
-                dx[c] = acc * self.scale[c];
-            }
-            // Backtracking on the normalised residual, the quantity the step minimises.
+                gram.solve(y);
+                for (c, col) in self.columns.iter().enumerate() {
+                    let mut acc = 0.0;
+                    for &(row, idx) in col {
+                        acc += jn[idx as usize] * y[row as usize];
+                    }
+                    dx[c] = acc * self.scale[c];
+                }
+            };
+            // The normalised residual, the quantity the step minimises.
             let m0 = merit(&r, &inv);
+            // Non-monotone acceptance (Grippo, Lampariello and Lucidi, 1986): a step may raise the
+            // merit above the current one as long as it stays below the largest of the last few,
+            // and below ten times the current one. Long chains that must swing far take fewer,
+            // longer steps this way (24 -> 18 iterations on 10,000 segments).
+            history.push(m0);
+            let m_ref = history.iter().rev().take(NONMONOTONE).fold(0.0f64, |a, &b| a.max(b));
             let mut alpha = (2.0 * alpha_prev).min(1.0);
             let mut accepted = false;
-            for _ in 0..30 {
-                for c in 0..ncols {
-                    xt[c] = x[c] + alpha * dx[c];
+            if damping.is_none() {
+                // Newton step with backtracking.
+                step(gram, y, dx);
+                for _ in 0..30 {
+                    for c in 0..ncols {
+                        xt[c] = x[c] + alpha * dx[c];
+                    }
+                    self.residuals(kernels, &xt, values, rt, xs);
+                    let mt = merit(&rt, &inv);
+                    if mt.is_finite() && (mt < m_ref.min(m0 * 10.0) || mt == 0.0) {
+                        accepted = true;
+                        break;
+                    }
+                    alpha *= 0.5;
                 }
-                self.residuals(kernels, &xt, values, &mut rt, &mut xs);
-                let mt = merit(&rt, &inv);
-                if mt.is_finite() && (mt < m0 || mt == 0.0) {
-                    accepted = true;
-                    break;
-                }
-                alpha *= 0.5;
             }
             if !accepted {
-                break;
+                // Backtracking stalls where the Jacobian is nearly singular, typically on the
+                // way to the least-squares point of constraints that cannot all hold. Damped
+                // (Levenberg-Marquardt) steps keep descending to that point, where the rank test
+                // can name the conflict; they also rescue consistent problems from a bad start.
+                // Adaptive damping as in Nocedal & Wright, "Numerical Optimization", 10.3.
+                let mut lambda = damping.unwrap_or(1e-6);
+                while lambda < 1e12 {
+                    if gram.factor(lambda, cfg.rank_tolerance) {
+                        step(gram, y, dx);
+                        for c in 0..ncols {
+                            xt[c] = x[c] + dx[c];
+                        }
+                        self.residuals(kernels, &xt, values, rt, xs);
+                        let mt = merit(&rt, &inv);
+                        if mt.is_finite() && (mt < m0 || mt == 0.0) {
+                            accepted = true;
+                            break;
+                        }
+                    }
+                    lambda *= 10.0;
+                }
+                damping = Some((lambda / 10.0).max(1e-12));
+                alpha = 1.0;
+                if !accepted {
+                    // Leave the undamped factorisation for the rank test.
+                    factored = gram.factor(0.0, cfg.rank_tolerance);
+                    break;
+                }
             }
             alpha_prev = alpha;
             x.copy_from_slice(&xt);

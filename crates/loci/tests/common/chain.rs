@@ -24,7 +24,15 @@ pub fn distance_of(i: usize) -> ConstraintId {
 /// last constraint added) that contradicts its own: the returned handle.
 pub fn chain(n: usize, conflict: bool) -> (System, Option<ConstraintId>) {
     let mut s = System::new();
-    for (h, v) in [(1, 0.0), (2, 0.0), (3, 0.0), (4, 1.0), (5, 0.0), (6, 0.0), (7, 0.0)] {
+    for (h, v) in [
+        (1, 0.0),
+        (2, 0.0),
+        (3, 0.0),
+        (4, 1.0),
+        (5, 0.0),
+        (6, 0.0),
+        (7, 0.0),
+    ] {
         s.add_param(Param::new(h, 1, v)).unwrap();
     }
     s.add_entity(Entity::point_3d(1, 1, [1, 2, 3])).unwrap();
@@ -46,27 +54,57 @@ pub fn chain(n: usize, conflict: bool) -> (System, Option<ConstraintId>) {
         for (h, v) in [(p, x), (p + 1, y), (p + 2, x1), (p + 3, y1)] {
             s.add_param(Param::new(h, 2, v + wobble(h))).unwrap();
         }
-        s.add_entity(Entity::point_2d(a, 2, WP, [p, p + 1])).unwrap();
-        s.add_entity(Entity::point_2d(b, 2, WP, [p + 2, p + 3])).unwrap();
+        s.add_entity(Entity::point_2d(a, 2, WP, [p, p + 1]))
+            .unwrap();
+        s.add_entity(Entity::point_2d(b, 2, WP, [p + 2, p + 3]))
+            .unwrap();
         s.add_entity(Entity::line(l, 2, wp, a, b)).unwrap();
         if i == 0 {
-            add(&mut s, Constraint::new(c, 2, K::WhereDragged).in_workplane(wp).with_points(a, 0));
+            add(
+                &mut s,
+                Constraint::new(c, 2, K::WhereDragged)
+                    .in_workplane(wp)
+                    .with_points(a, 0),
+            );
             c += 1;
         }
-        add(&mut s, Constraint::new(c, 2, K::PtPtDistance).in_workplane(wp).with_points(a, b).with_val(1.0));
+        add(
+            &mut s,
+            Constraint::new(c, 2, K::PtPtDistance)
+                .in_workplane(wp)
+                .with_points(a, b)
+                .with_val(1.0),
+        );
         c += 1;
         if i > 0 {
             let (_, prev_b, prev_l) = segment(i - 1);
-            add(&mut s, Constraint::new(c, 2, K::PointsCoincident).in_workplane(wp).with_points(prev_b, a));
+            add(
+                &mut s,
+                Constraint::new(c, 2, K::PointsCoincident)
+                    .in_workplane(wp)
+                    .with_points(prev_b, a),
+            );
             c += 1;
-            add(&mut s, Constraint::new(c, 2, K::Angle).in_workplane(wp).with_entities([prev_l, l, 0, 0]).with_val(60.0));
+            add(
+                &mut s,
+                Constraint::new(c, 2, K::Angle)
+                    .in_workplane(wp)
+                    .with_entities([prev_l, l, 0, 0])
+                    .with_val(60.0),
+            );
             c += 1;
         }
         (x, y) = (x1, y1);
     }
     let extra = conflict.then(|| {
         let (a, b, _) = segment(n / 2);
-        add(&mut s, Constraint::new(c, 2, K::PtPtDistance).in_workplane(wp).with_points(a, b).with_val(1.5));
+        add(
+            &mut s,
+            Constraint::new(c, 2, K::PtPtDistance)
+                .in_workplane(wp)
+                .with_points(a, b)
+                .with_val(1.5),
+        );
         ConstraintId(c)
     });
     (s, extra)
