@@ -4,7 +4,9 @@
 //! 2 did not converge, 3 bad input (unreadable, malformed or invalid model).
 
 mod check;
+mod conformance;
 mod report;
+mod slvs;
 
 use clap::{Parser, Subcommand};
 use loci::format::json::{Problem, SolveResult};
@@ -21,9 +23,10 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Solve a problem file and print a report.
+    /// Solve a problem file and print a report: a loci JSON problem, or a SolveSpace `.slvs`
+    /// file (every group in order, each reported).
     Solve {
-        /// A loci JSON problem.
+        /// A loci JSON problem or a SolveSpace `.slvs` file.
         file: PathBuf,
         /// Print the result as JSON instead of a report.
         #[arg(long)]
@@ -31,7 +34,8 @@ enum Command {
         /// Solve this group instead of the one the file names.
         #[arg(long)]
         group: Option<u32>,
-        /// Write the solved problem (JSON) here.
+        /// Write the solved problem here (JSON; for a `.slvs` input, `.slvs` or `.json` by
+        /// the name's extension).
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
@@ -49,6 +53,22 @@ enum Command {
         /// List fixed entities too, not only those that can move.
         #[arg(long)]
         all: bool,
+    },
+    /// Convert a SolveSpace `.slvs` file to a loci JSON problem.
+    Convert {
+        /// The `.slvs` file.
+        file: PathBuf,
+        /// The format to write: `json`.
+        #[arg(long, value_parser = ["json"])]
+        to: String,
+        /// Write here instead of standard output.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+    /// Check loci against SolveSpace's regression fixtures and print a Markdown report.
+    Conformance {
+        /// The folder of `.slvs` files (searched recursively).
+        dir: PathBuf,
     },
 }
 
@@ -73,6 +93,14 @@ fn main() -> ExitCode {
 
 fn run(cli: Cli) -> anyhow::Result<u8> {
     match cli.command {
+        Command::Solve {
+            file,
+            json,
+            group,
+            output,
+        } if file.extension().is_some_and(|e| e == "slvs") => {
+            slvs::solve(&file, json, group, output.as_deref())
+        }
         Command::Solve {
             file,
             json,
@@ -141,6 +169,25 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
                 );
             }
             Ok(check::exit_code(&d))
+        }
+        Command::Convert {
+            file,
+            to: _,
+            output,
+        } => {
+            let text = slvs::to_json(&file)?;
+            match output {
+                Some(out) => std::fs::write(&out, text)
+                    .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?,
+                None => println!("{text}"),
+            }
+            Ok(code::SOLVED)
+        }
+        Command::Conformance { dir } => {
+            let cmd = format!("loci conformance {}", dir.display());
+            let (md, _) = conformance::run(&dir, &cmd)?;
+            print!("{md}");
+            Ok(code::SOLVED)
         }
     }
 }

@@ -2,7 +2,6 @@
 
 use crate::abi::*;
 use loci::{Constraint, ConstraintKind, Entity, ModelError, ObjectId, Param, System};
-use std::collections::HashMap;
 use std::fmt;
 use std::os::raw::c_int;
 
@@ -61,7 +60,10 @@ impl fmt::Display for InputError {
                 write!(f, "sys->{array} is not aligned for its element type")
             }
             InputError::NegativeCount { count_field, count } => {
-                write!(f, "sys->{count_field} is {count}; a count cannot be negative")
+                write!(
+                    f,
+                    "sys->{count_field} is {count}; a count cannot be negative"
+                )
             }
             InputError::UnknownEntityType { entity, ty } => write!(
                 f,
@@ -136,21 +138,13 @@ pub fn entity(e: &Slvs_Entity) -> Result<Entity, InputError> {
     })
 }
 
-/// The loci constraint for a C constraint; `entity_type` gives the `SLVS_E_*` type of an
-/// entity handle (when it exists).
-///
-/// Two signed dimensions are measured along a line whose direction libslvs takes from its
-/// second point to its first, where loci goes from first to second: the distance from a point
-/// to a line in a workplane (`SLVS_C_PT_LINE_DISTANCE`), and the distance between two points
-/// projected onto a line (`SLVS_C_PROJ_PT_DISTANCE`). Their `valA` changes sign on the way in,
-/// so a C program gets the side libslvs gives it.
+/// The loci constraint for a C constraint. loci's equations follow libslvs's conventions (the side a
+/// signed point-line distance takes, a line's direction from its second point to its first),
+/// so values pass through unchanged.
 ///
 /// # Errors
 /// An unknown type.
-pub fn constraint(
-    c: &Slvs_Constraint,
-    entity_type: impl Fn(Slvs_hEntity) -> Option<c_int>,
-) -> Result<Constraint, InputError> {
+pub fn constraint(c: &Slvs_Constraint) -> Result<Constraint, InputError> {
     let kind = u32::try_from(c.r#type)
         .ok()
         .and_then(ConstraintKind::from_slvs_code)
@@ -158,15 +152,9 @@ pub fn constraint(
             constraint: c.h,
             ty: c.r#type,
         })?;
-    let reversed_line = match kind {
-        ConstraintKind::PtLineDistance => c.wrkpl != 0,
-        ConstraintKind::ProjPtDistance => entity_type(c.entityA) == Some(SLVS_E_LINE_SEGMENT),
-        _ => false,
-    };
-    let val = if reversed_line { -c.valA } else { c.valA };
     Ok(Constraint::new(c.h, c.group, kind)
         .in_workplane(opt(c.wrkpl))
-        .with_val(val)
+        .with_val(c.valA)
         .with_points(c.ptA, c.ptB)
         .with_entities([c.entityA, c.entityB, c.entityC, c.entityD])
         .with_flags(c.other != 0, c.other2 != 0))
@@ -189,9 +177,8 @@ pub fn system(
     for e in entities {
         sys.add_entity(entity(e)?)?;
     }
-    let types: HashMap<Slvs_hEntity, c_int> = entities.iter().map(|e| (e.h, e.r#type)).collect();
     for c in constraints {
-        sys.add_constraint(constraint(c, |h| types.get(&h).copied())?)?;
+        sys.add_constraint(constraint(c)?)?;
     }
     sys.validate()?;
     Ok(sys)
@@ -217,7 +204,13 @@ mod tests {
     #[test]
     fn unknown_entity_type_is_named() {
         let err = entity(&blank_entity(7, 12345)).unwrap_err();
-        assert_eq!(err, InputError::UnknownEntityType { entity: 7, ty: 12345 });
+        assert_eq!(
+            err,
+            InputError::UnknownEntityType {
+                entity: 7,
+                ty: 12345
+            }
+        );
         assert_eq!(
             err.to_string(),
             "entity 7: type 12345 is not an SLVS_E_* entity type"
@@ -227,7 +220,23 @@ mod tests {
 
     #[test]
     fn dangling_constraint_reference_blames_the_constraint() {
-        let params = [Slvs_Param { h: 1, group: 1, val: 0.0 }, Slvs_Param { h: 2, group: 1, val: 0.0 }, Slvs_Param { h: 3, group: 1, val: 0.0 }];
+        let params = [
+            Slvs_Param {
+                h: 1,
+                group: 1,
+                val: 0.0,
+            },
+            Slvs_Param {
+                h: 2,
+                group: 1,
+                val: 0.0,
+            },
+            Slvs_Param {
+                h: 3,
+                group: 1,
+                val: 0.0,
+            },
+        ];
         let mut p = blank_entity(10, SLVS_E_POINT_IN_3D);
         p.param = [1, 2, 3, 0];
         let c = Slvs_Constraint {

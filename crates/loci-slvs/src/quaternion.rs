@@ -29,16 +29,36 @@ fn quaternion_from_basis(u: [f64; 3], v: [f64; 3]) -> [f64; 4] {
     ];
     let q = if 1.0 + u[0] + v[1] + n[2] > 1e-4 {
         let s = 2.0 * (1.0 + u[0] + v[1] + n[2]).sqrt();
-        [s / 4.0, (v[2] - n[1]) / s, (n[0] - u[2]) / s, (u[1] - v[0]) / s]
+        [
+            s / 4.0,
+            (v[2] - n[1]) / s,
+            (n[0] - u[2]) / s,
+            (u[1] - v[0]) / s,
+        ]
     } else if u[0] > v[1] && u[0] > n[2] {
         let s = 2.0 * (1.0 + u[0] - v[1] - n[2]).sqrt();
-        [(v[2] - n[1]) / s, s / 4.0, (u[1] + v[0]) / s, (n[0] + u[2]) / s]
+        [
+            (v[2] - n[1]) / s,
+            s / 4.0,
+            (u[1] + v[0]) / s,
+            (n[0] + u[2]) / s,
+        ]
     } else if v[1] > n[2] {
         let s = 2.0 * (1.0 - u[0] + v[1] - n[2]).sqrt();
-        [(n[0] - u[2]) / s, (u[1] + v[0]) / s, s / 4.0, (v[2] + n[1]) / s]
+        [
+            (n[0] - u[2]) / s,
+            (u[1] + v[0]) / s,
+            s / 4.0,
+            (v[2] + n[1]) / s,
+        ]
     } else {
         let s = 2.0 * (1.0 - u[0] - v[1] + n[2]).sqrt();
-        [(u[1] - v[0]) / s, (n[0] + u[2]) / s, (v[2] + n[1]) / s, s / 4.0]
+        [
+            (u[1] - v[0]) / s,
+            (n[0] + u[2]) / s,
+            (v[2] + n[1]) / s,
+            s / 4.0,
+        ]
     };
     let len = q.iter().map(|a| a * a).sum::<f64>().sqrt();
     q.map(|a| a / len)
@@ -152,7 +172,15 @@ mod tests {
         let mut ux = 9.0;
         // SAFETY: null is allowed for every out-pointer; `ux` is a live local.
         unsafe {
-            Slvs_QuaternionU(1.0, 0.0, 0.0, 0.0, &mut ux, std::ptr::null_mut(), std::ptr::null_mut())
+            Slvs_QuaternionU(
+                1.0,
+                0.0,
+                0.0,
+                0.0,
+                &mut ux,
+                std::ptr::null_mut(),
+                std::ptr::null_mut(),
+            )
         };
         n[0] = ux;
         assert_eq!(n[0], 1.0);

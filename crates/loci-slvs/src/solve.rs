@@ -161,7 +161,11 @@ unsafe fn solve_c(sys: *mut Slvs_System, hg: Slvs_hGroup) {
         Err(e) => {
             let culprit = e.culprit();
             last_error::set(e.to_string());
-            (LOCI_SLVS_RESULT_INVALID_INPUT, -1, culprit.into_iter().collect())
+            (
+                LOCI_SLVS_RESULT_INVALID_INPUT,
+                -1,
+                culprit.into_iter().collect(),
+            )
         }
     };
     // SAFETY: `sys` is valid for writes (contract); `failed`, when non-null, holds at least the

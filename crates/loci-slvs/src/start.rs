@@ -48,7 +48,11 @@ fn equal_pairs(
     let out = match c.r#type {
         100_000 => pairs(c.ptA, c.ptB),
         100_019 | 100_020 => {
-            let (a, b) = if c.entityA != 0 { ends(c.entityA).unwrap_or((0, 0)) } else { (c.ptA, c.ptB) };
+            let (a, b) = if c.entityA != 0 {
+                ends(c.entityA).unwrap_or((0, 0))
+            } else {
+                (c.ptA, c.ptB)
+            };
             let axis = usize::from(c.r#type == 100_019);
             (c.wrkpl != 0)
                 .then(|| pairs(a, b))
@@ -166,8 +170,14 @@ mod tests {
     fn the_second_point_is_kept_unless_the_first_is_dragged() {
         let e = [point2(100, 9, 1, 2), point2(101, 9, 3, 4)];
         let c = [coincident(1, 100, 101)];
-        assert_eq!(merged_start_values(&params(), &e, &c, &[], 2), vec![(0, 30.0), (1, 40.0)]);
-        assert_eq!(merged_start_values(&params(), &e, &c, &[1, 2], 2), vec![(2, 10.0), (3, 20.0)]);
+        assert_eq!(
+            merged_start_values(&params(), &e, &c, &[], 2),
+            vec![(0, 30.0), (1, 40.0)]
+        );
+        assert_eq!(
+            merged_start_values(&params(), &e, &c, &[1, 2], 2),
+            vec![(2, 10.0), (3, 20.0)]
+        );
         // Another group's constraint, or points outside the constraint's workplane: nothing.
         assert!(merged_start_values(&params(), &e, &c, &[], 3).is_empty());
         let mut off = c;

@@ -68,7 +68,8 @@ const KNOWN: &[(&str, Field, &str)] = &[
 /// libslvs stops looking for redundant constraints when its time runs out, so on a busy machine
 /// it may name only some of them (seen: `2,` and `2,3,` for the same input). For a redundant
 /// but solved system a libslvs list that is a subset of loci's therefore counts as a match.
-const TIME_LIMITED_REDUNDANCY: &str = "libslvs's list of redundant constraints is a subset of loci's (its search is time-limited)";
+const TIME_LIMITED_REDUNDANCY: &str =
+    "libslvs's list of redundant constraints is a subset of loci's (its search is time-limited)";
 
 #[derive(Debug, Clone, PartialEq)]
 struct Line {
@@ -96,7 +97,10 @@ fn parse(out: &str) -> Vec<(String, Outcome)> {
             }
             assert_eq!(f.len(), 6, "malformed line: {l}");
             let list = |s: &str| -> Vec<u32> {
-                s.split(',').filter(|x| !x.is_empty()).map(|x| x.parse().unwrap()).collect()
+                s.split(',')
+                    .filter(|x| !x.is_empty())
+                    .map(|x| x.parse().unwrap())
+                    .collect()
             };
             let params = f[5]
                 .split(',')
@@ -129,7 +133,10 @@ fn lib_dir() -> PathBuf {
             return dir.clone();
         }
     }
-    panic!("libloci_slvs.a not found in {} or its parent", deps.display());
+    panic!(
+        "libloci_slvs.a not found in {} or its parent",
+        deps.display()
+    );
 }
 
 fn crate_dir() -> &'static Path {
@@ -137,7 +144,10 @@ fn crate_dir() -> &'static Path {
 }
 
 fn have_cc() -> bool {
-    Command::new("cc").arg("--version").output().is_ok_and(|o| o.status.success())
+    Command::new("cc")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success())
 }
 
 fn have_libslvs() -> bool {
@@ -148,7 +158,10 @@ fn have_libslvs() -> bool {
 /// system header and `-lslvs`.
 fn compile(src: &str, out: &Path, with_loci: bool) -> Result<(), String> {
     let mut cmd = Command::new("cc");
-    cmd.arg("-O1").arg("-o").arg(out).arg(crate_dir().join("tests/c").join(src));
+    cmd.arg("-O1")
+        .arg("-o")
+        .arg(out)
+        .arg(crate_dir().join("tests/c").join(src));
     if with_loci {
         cmd.arg("-I").arg(crate_dir().join("include"));
         cmd.arg(lib_dir().join("libloci_slvs.a"));
@@ -213,7 +226,9 @@ fn check_loci_alone(loci: &[(String, Outcome)]) {
 
 fn same_params(a: &Line, b: &Line) -> bool {
     a.params.len() == b.params.len()
-        && a.params.iter().all(|(k, v)| b.params.get(k).is_some_and(|w| (v - w).abs() <= 1e-6))
+        && a.params
+            .iter()
+            .all(|(k, v)| b.params.get(k).is_some_and(|w| (v - w).abs() <= 1e-6))
 }
 
 #[test]
@@ -255,7 +270,9 @@ fn loci_matches_libslvs() {
     let mut stale = Vec::new();
     for ((name, s), (_, l)) in slvs.iter().zip(&loci) {
         let entry = KNOWN.iter().find(|k| k.0 == name);
-        let Outcome::Solved(l) = l else { unreachable!() };
+        let Outcome::Solved(l) = l else {
+            unreachable!()
+        };
         let s = match s {
             Outcome::Crash(sig) => match entry {
                 Some((_, Field::LibslvsCrash { result, dof }, why)) => {
@@ -340,13 +357,17 @@ fn header_layout_matches_libslvs() {
     assert!(ours.contains("sizeof Slvs_System 88") || cfg!(not(target_pointer_width = "64")));
     assert!(ours.contains("const SLVS_C_ARC_LINE_DIFFERENCE 100037"));
     if !have_libslvs() {
-        loudly("header layout: COMPARISON WITH LIBSLVS NOT POSSIBLE: /usr/include/slvs.h is missing");
+        loudly(
+            "header layout: COMPARISON WITH LIBSLVS NOT POSSIBLE: /usr/include/slvs.h is missing",
+        );
         return;
     }
     let theirs = tmp.join("layout_libslvs");
     // Only the header is needed; link nothing beyond libc.
     let mut cmd = Command::new("cc");
-    cmd.arg("-o").arg(&theirs).arg(crate_dir().join("tests/c/layout.c"));
+    cmd.arg("-o")
+        .arg(&theirs)
+        .arg(crate_dir().join("tests/c/layout.c"));
     let o = cmd.output().unwrap();
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert_eq!(ours, run(&theirs));

@@ -49,8 +49,15 @@ struct Model {
 
 impl Model {
     fn new() -> Self {
-        let mut params: Vec<_> = (1..=7).map(|h| param(h, 1, if h == 4 { 1.0 } else { 0.0 })).collect();
-        params.extend([param(11, 2, 0.0), param(12, 2, 0.0), param(13, 2, 9.0), param(14, 2, 1.0)]);
+        let mut params: Vec<_> = (1..=7)
+            .map(|h| param(h, 1, if h == 4 { 1.0 } else { 0.0 }))
+            .collect();
+        params.extend([
+            param(11, 2, 0.0),
+            param(12, 2, 0.0),
+            param(13, 2, 9.0),
+            param(14, 2, 1.0),
+        ]);
         let blank = |h, ty| Slvs_Entity {
             h,
             group: 1,
@@ -68,9 +75,20 @@ impl Model {
         let mut wp = blank(200, SLVS_E_WORKPLANE);
         wp.point[0] = 101;
         wp.normal = 102;
-        let entities = vec![origin, normal, wp, point2(301, 200, 11, 12), point2(302, 200, 13, 14)];
+        let entities = vec![
+            origin,
+            normal,
+            wp,
+            point2(301, 200, 11, 12),
+            point2(302, 200, 13, 14),
+        ];
         let constraints = vec![constraint(1, 100_001, 200, 10.0, 301, 302)];
-        Model { params, entities, constraints, failed: vec![0; 8] }
+        Model {
+            params,
+            entities,
+            constraints,
+            failed: vec![0; 8],
+        }
     }
 
     fn system(&mut self) -> Slvs_System {
@@ -100,7 +118,11 @@ fn last_error() -> String {
     let mut buf = vec![0i8; 256];
     // SAFETY: `buf` is 256 bytes long.
     let n = unsafe { loci_slvs::Loci_Slvs_LastError(buf.as_mut_ptr(), 256) };
-    let bytes: Vec<u8> = buf.iter().take_while(|&&c| c != 0).map(|&c| c as u8).collect();
+    let bytes: Vec<u8> = buf
+        .iter()
+        .take_while(|&&c| c != 0)
+        .map(|&c| c as u8)
+        .collect();
     assert_eq!(n as usize, bytes.len());
     String::from_utf8(bytes).unwrap()
 }
@@ -111,7 +133,9 @@ fn a_good_model_solves_and_clears_the_error() {
     let mut s = m.system();
     solve(&mut s);
     assert_eq!((s.result, s.dof, s.faileds), (SLVS_RESULT_OKAY, 3, 0));
-    let d = ((m.params[9].val - m.params[7].val).powi(2) + (m.params[10].val - m.params[8].val).powi(2)).sqrt();
+    let d = ((m.params[9].val - m.params[7].val).powi(2)
+        + (m.params[10].val - m.params[8].val).powi(2))
+    .sqrt();
     assert!((d - 10.0).abs() < 1e-9, "distance {d}");
     assert_eq!(last_error(), "");
 }
@@ -122,7 +146,10 @@ fn null_array_with_a_count_is_invalid_input() {
     let mut s = m.system();
     s.constraint = ptr::null_mut();
     solve(&mut s);
-    assert_eq!((s.result, s.dof, s.faileds), (LOCI_SLVS_RESULT_INVALID_INPUT, -1, 0));
+    assert_eq!(
+        (s.result, s.dof, s.faileds),
+        (LOCI_SLVS_RESULT_INVALID_INPUT, -1, 0)
+    );
     assert_eq!(last_error(), "sys->constraint is null but its count is 1");
     assert_eq!(m.params[9].val, 9.0, "nothing written");
 }
@@ -174,7 +201,11 @@ fn nan_value_and_unknown_types_are_invalid_input() {
     let mut s = m.system();
     solve(&mut s);
     assert_eq!(s.result, LOCI_SLVS_RESULT_INVALID_INPUT);
-    assert!(last_error().contains("entity 301: type 7"), "{}", last_error());
+    assert!(
+        last_error().contains("entity 301: type 7"),
+        "{}",
+        last_error()
+    );
 }
 
 #[test]
@@ -183,7 +214,10 @@ fn two_d_only_constraint_without_workplane_names_it() {
     m.constraints.push(constraint(2, 100_019, 0, 0.0, 301, 302));
     let mut s = m.system();
     solve(&mut s);
-    assert_eq!((s.result, s.faileds, m.failed[0]), (LOCI_SLVS_RESULT_INVALID_INPUT, 1, 2));
+    assert_eq!(
+        (s.result, s.faileds, m.failed[0]),
+        (LOCI_SLVS_RESULT_INVALID_INPUT, 1, 2)
+    );
 }
 
 #[test]
@@ -195,7 +229,8 @@ fn null_system_and_null_failed_are_harmless() {
     let mut s = m.system();
     s.failed = ptr::null_mut();
     s.faileds = 5;
-    m.constraints.push(constraint(2, 100_001, 200, 20.0, 301, 302));
+    m.constraints
+        .push(constraint(2, 100_001, 200, 20.0, 301, 302));
     let mut s2 = m.system();
     s2.failed = ptr::null_mut();
     s2.faileds = 5;
@@ -208,7 +243,8 @@ fn null_system_and_null_failed_are_harmless() {
 #[test]
 fn short_failed_array_is_not_overrun() {
     let mut m = Model::new();
-    m.constraints.push(constraint(2, 100_001, 200, 20.0, 301, 302));
+    m.constraints
+        .push(constraint(2, 100_001, 200, 20.0, 301, 302));
     m.failed = vec![0; 1];
     let mut s = m.system();
     solve(&mut s);
@@ -219,16 +255,23 @@ fn short_failed_array_is_not_overrun() {
 #[test]
 fn redundant_but_solved_writes_values_and_reports_inconsistent() {
     let mut m = Model::new();
-    m.constraints.push(constraint(2, 100_001, 200, 10.0, 302, 301));
+    m.constraints
+        .push(constraint(2, 100_001, 200, 10.0, 302, 301));
     let mut s = m.system();
     solve(&mut s);
-    assert_eq!((s.result, s.dof, s.faileds), (SLVS_RESULT_INCONSISTENT, 3, 2));
+    assert_eq!(
+        (s.result, s.dof, s.faileds),
+        (SLVS_RESULT_INCONSISTENT, 3, 2)
+    );
     assert_eq!(&m.failed[..2], &[1, 2]);
-    let d = ((m.params[9].val - m.params[7].val).powi(2) + (m.params[10].val - m.params[8].val).powi(2)).sqrt();
+    let d = ((m.params[9].val - m.params[7].val).powi(2)
+        + (m.params[10].val - m.params[8].val).powi(2))
+    .sqrt();
     assert!((d - 10.0).abs() < 1e-9, "solved values written: {d}");
     // Without calculateFaileds the redundant ones are not named, as libslvs does.
     let mut m = Model::new();
-    m.constraints.push(constraint(2, 100_001, 200, 10.0, 302, 301));
+    m.constraints
+        .push(constraint(2, 100_001, 200, 10.0, 302, 301));
     let mut s = m.system();
     s.calculateFaileds = 0;
     solve(&mut s);

@@ -73,6 +73,15 @@ fn compile_entities(
         };
         let mut l = Locals::default();
         let ent = r.entity(ObjectId::Entity(e.h), e.h, &mut l)?;
+        // An entity of this group whose parameters all belong to earlier groups (a copy) has
+        // nothing to solve: its condition holds or not, but it is no equation of this group.
+        if !l
+            .params
+            .iter()
+            .any(|&p| r.sys.params()[p as usize].group == group)
+        {
+            continue;
+        }
         let eq = Equation {
             kind,
             wp: None,

@@ -1,18 +1,20 @@
 //! Lines: distances from points to lines, lengths, angles, parallel and perpendicular.
 
 use super::points::{dominant_axis, push_two};
-use super::refs::{Frame, Geo, PointRef};
+use super::refs::{Ent, Frame, Geo, PointRef};
 use super::{Equation, Rows};
 use crate::geom::{Scalar, Vec3};
 
-/// Distance from `p` to the line through `l`: signed in a workplane (positive to the left of
-/// start→end, i.e. above a rightward line), unsigned in space.
+/// Distance from `p` to the line through `l`: signed in a workplane, unsigned in space.
+///
+/// The sign is SolveSpace's: positive to the right of start→end (below a rightward line),
+/// as its `PointLineDistance` computes it; files store `val` with that sign.
 fn pt_line<S: Scalar>(g: &Geo<S>, p: &PointRef, l: &[PointRef; 2], w: Option<&Frame>) -> S {
     let a = g.at(&l[0], w);
     let d = g.at(&l[1], w).minus(a);
     let c = d.cross(g.at(p, w).minus(a));
     match w {
-        Some(_) => c.z / d.norm(),
+        Some(_) => -c.z / d.norm(),
         None => c.norm() / d.norm(),
     }
 }
@@ -94,8 +96,19 @@ fn cos_sin<S: Scalar>(a: Vec3<S>, b: Vec3<S>, planar: bool) -> (S, S) {
     (a.dot(b) * inv, s * inv)
 }
 
+/// The direction of entity `i`: a line's start minus end, or a normal's N axis (SolveSpace
+/// lets angle, parallel and perpendicular take either, with its `VectorGetExprs`), projected
+/// into the workplane. Between two lines the orientation cancels out; between a line and a
+/// normal it decides the angle.
+fn vector<S: Scalar>(e: &Equation, g: &Geo<S>, i: usize, w: Option<&Frame>) -> Vec3<S> {
+    match e.ent(i) {
+        Ent::Line(l) => g.at(&l[0], w).minus(g.at(&l[1], w)),
+        other => g.project_dir(super::points::direction(other, g), w),
+    }
+}
+
 fn dirs<S: Scalar>(e: &Equation, g: &Geo<S>, i: usize, j: usize) -> (Vec3<S>, Vec3<S>) {
-    (g.line_dir(e.line(i), e.wp()), g.line_dir(e.line(j), e.wp()))
+    (vector(e, g, i, e.wp()), vector(e, g, j, e.wp()))
 }
 
 /// The target angle in radians, with `other` meaning the supplement.
@@ -174,7 +187,7 @@ pub(super) fn equal_angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>
 }
 
 pub(super) fn choose_parallel(e: &Equation, g: &Geo<f64>) -> u8 {
-    dominant_axis(g.line_dir(e.line(0), None))
+    dominant_axis(vector(e, g, 0, None))
 }
 
 /// Lines `entity_a` and `entity_b` are parallel: one row in a workplane, two in space.

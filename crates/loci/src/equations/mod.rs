@@ -252,7 +252,14 @@ impl Equation {
         self.scatter(&xs[..x.len()], active.len(), start, res, jac);
     }
 
-    fn pass_heap<const N: usize>(&self, x: &[f64], active: &[u16], start: usize, res: &mut [f64], jac: &mut [f64]) {
+    fn pass_heap<const N: usize>(
+        &self,
+        x: &[f64],
+        active: &[u16],
+        start: usize,
+        res: &mut [f64],
+        jac: &mut [f64],
+    ) {
         let mut xs: Vec<Dual<N>> = x.iter().map(|&v| Dual::cst(v)).collect();
         for (k, &s) in active.iter().enumerate().skip(start).take(N) {
             xs[s as usize] = Dual::var(x[s as usize], k - start);
@@ -260,7 +267,14 @@ impl Equation {
         self.scatter(&xs, active.len(), start, res, jac);
     }
 
-    fn scatter<const N: usize>(&self, xs: &[Dual<N>], na: usize, start: usize, res: &mut [f64], jac: &mut [f64]) {
+    fn scatter<const N: usize>(
+        &self,
+        xs: &[Dual<N>],
+        na: usize,
+        start: usize,
+        res: &mut [f64],
+        jac: &mut [f64],
+    ) {
         let mut out = Rows::new();
         self.eval(xs, &mut out);
         let width = N.min(na - start.min(na));

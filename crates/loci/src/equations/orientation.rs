@@ -1,8 +1,9 @@
 //! Normals: unit quaternions and equal orientation.
 
+use super::points::{dominant_axis, push_two};
 use super::refs::{Ent, Geo};
 use super::{Equation, Rows};
-use crate::geom::Scalar;
+use crate::geom::{Quat, Scalar};
 
 /// A 3D normal's implicit condition `w^2 + x^2 + y^2 + z^2 = 1`.
 pub(super) fn unit_quaternion<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
@@ -12,18 +13,33 @@ pub(super) fn unit_quaternion<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Row
     out.push(g.quat(*q).norm2() - 1.0);
 }
 
-pub(super) fn choose_same_orientation(_e: &Equation, _g: &Geo<f64>) -> u8 {
-    0
+/// The branch of `same_orientation`: the dominant axis of `entity_a`'s N (which two
+/// components of the cross product to keep, in bits 0-1), and in bit 2 whether U of `a`
+/// is held perpendicular to V of `b` (else to U of `b`), whichever is nearer to holding.
+pub(super) fn choose_same_orientation(e: &Equation, g: &Geo<f64>) -> u8 {
+    let (a, b) = normals(e, g);
+    let axis = dominant_axis(a.n());
+    let uv = a.u().dot(b.v()).abs() < a.u().dot(b.u()).abs();
+    axis | if uv { 4 } else { 0 }
 }
 
-/// Normals `entity_a` and `entity_b` are the same rotation: the vector part of
-/// `q_a * conj(q_b)` is zero (three rows; `q` and `-q` are the same rotation).
-pub(super) fn same_orientation<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+fn normals<S: Scalar>(e: &Equation, g: &Geo<S>) -> (Quat<S>, Quat<S>) {
     let (Ent::Normal(a), Ent::Normal(b)) = (e.ent(0), e.ent(1)) else {
         unreachable!("validated: normals")
     };
-    let r = g.quat(*a).times(g.quat(*b).conj());
-    out.push(r.x);
-    out.push(r.y);
-    out.push(r.z);
+    (g.quat(*a), g.quat(*b))
+}
+
+/// Normals `entity_a` and `entity_b` have the same orientation, as SolveSpace means it:
+/// their N axes are parallel (either direction), and U of `a` is perpendicular to V of `b`
+/// or to U of `b`, whichever is nearer when the equations are built, so the frames agree up
+/// to a quarter or half turn in the plane. Three rows.
+pub(super) fn same_orientation<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let (a, b) = normals(e, g);
+    push_two(a.n().cross(b.n()), e.choice & 3, out);
+    out.push(if e.choice & 4 != 0 {
+        a.u().dot(b.v())
+    } else {
+        a.u().dot(b.u())
+    });
 }

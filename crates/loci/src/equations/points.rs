@@ -45,17 +45,20 @@ pub(super) fn where_dragged<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<
     }
 }
 
-/// `(pt_b - pt_a) . dir / |dir| = val`, with `dir` a line's or a normal's direction.
+/// `(pt_b - pt_a) . dir / |dir| = val`, with `dir` a line's or a normal's direction
+/// (see [`direction`]).
 pub(super) fn proj_pt_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let dir = direction(e.ent(0), g);
     let d = g.pos(e.pt(1)).minus(g.pos(e.pt(0)));
     out.push(d.dot(dir) / dir.norm() - e.val);
 }
 
-/// The direction of a line (end minus start) or of a normal (its N axis), in space.
+/// The direction of a line or of a normal (its N axis), in space. A line's direction is
+/// start minus end, as SolveSpace's `VectorGetExprs` has it: signed dimensions along a line
+/// (`proj_pt_distance`) and angles between a line and a normal depend on it.
 pub(super) fn direction<S: Scalar>(ent: &Ent, g: &Geo<S>) -> Vec3<S> {
     match ent {
-        Ent::Line(l) => g.pos(&l[1]).minus(g.pos(&l[0])),
+        Ent::Line(l) => g.pos(&l[0]).minus(g.pos(&l[1])),
         Ent::Normal(q) => g.quat(*q).n(),
         Ent::Workplane(f) => g.plane_normal(f),
         _ => unreachable!("validated: a line or a normal"),
@@ -140,12 +143,29 @@ pub(super) fn symmetric_line<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows
     out.push(d.dot(b.minus(a)) / len);
 }
 
-/// `pt_a` is at the midpoint of line `entity_a`.
+/// `pt_a` is at the midpoint of line `entity_a`; or, with no `pt_a`, the midpoint of line
+/// `entity_a` lies in plane `entity_b` (SolveSpace's second form of this constraint).
 pub(super) fn at_midpoint<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let w = e.wp();
     let l = e.line(0);
     let mid = g.at(&l[0], w).plus(g.at(&l[1], w)).scale_f(0.5);
-    let d = g.at(e.pt(0), w).minus(mid);
+    let Some(p) = &e.pts[0] else {
+        // In a workplane the midpoint is taken there and lifted back into space, as
+        // SolveSpace does.
+        let m = match w {
+            None => mid,
+            Some(f) => {
+                let q = g.quat(f.q);
+                g.v3(f.origin)
+                    .plus(q.u().scale(mid.x))
+                    .plus(q.v().scale(mid.y))
+            }
+        };
+        let plane = e.frame(1);
+        out.push(m.minus(g.v3(plane.origin)).dot(g.plane_normal(plane)));
+        return;
+    };
+    let d = g.at(p, w).minus(mid);
     out.push(d.x);
     out.push(d.y);
     if w.is_none() {

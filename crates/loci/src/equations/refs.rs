@@ -71,7 +71,10 @@ pub(crate) struct Resolver<'a> {
 
 impl<'a> Resolver<'a> {
     pub fn new(sys: &'a System) -> Self {
-        Self { sys, frames: Default::default() }
+        Self {
+            sys,
+            frames: Default::default(),
+        }
     }
 
     fn cached_frame(&self, h: EntityId, l: &mut Locals) -> Option<Frame> {
@@ -80,7 +83,11 @@ impl<'a> Resolver<'a> {
         for (o, p) in s.iter_mut().zip(g) {
             *o = l.slot(p as usize);
         }
-        Some(Frame { id: h, origin: [s[0], s[1], s[2]], q: [s[3], s[4], s[5], s[6]] })
+        Some(Frame {
+            id: h,
+            origin: [s[0], s[1], s[2]],
+            q: [s[3], s[4], s[5], s[6]],
+        })
     }
 
     fn param(

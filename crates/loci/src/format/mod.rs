@@ -1,3 +1,4 @@
 //! File formats.
 
 pub mod json;
+pub mod slvs;

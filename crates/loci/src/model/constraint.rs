@@ -125,6 +125,7 @@ kinds! {
     /// Distance `pt_a`–line `entity_a` equals distance `pt_b`–line `entity_b`.
     EqPtLnDistances = "eq_pt_ln_distances", 100011;
     /// Angle(`entity_a`, `entity_b`) equals angle(`entity_c`, `entity_d`); supplementary with `other`.
+    /// Each may be a line or a normal (its axis).
     EqualAngle = "equal_angle", 100012;
     /// Length of line `entity_a` equals the length of arc `entity_b`.
     EqualLineArcLen = "equal_line_arc_len", 100013;
@@ -136,7 +137,8 @@ kinds! {
     SymmetricVert = "symmetric_vert", 100016;
     /// `pt_a` and `pt_b` are symmetric about line `entity_a`.
     SymmetricLine = "symmetric_line", 100017;
-    /// `pt_a` lies at the midpoint of line `entity_a`.
+    /// `pt_a` lies at the midpoint of line `entity_a`; or, when `pt_a` is empty, the midpoint
+    /// lies in workplane `entity_b`.
     AtMidpoint = "at_midpoint", 100018;
     /// Line `entity_a` (or `pt_a`–`pt_b`) is horizontal in the workplane.
     Horizontal = "horizontal", 100019;
@@ -148,11 +150,12 @@ kinds! {
     PtOnCircle = "pt_on_circle", 100022;
     /// Normals `entity_a` and `entity_b` are the same rotation.
     SameOrientation = "same_orientation", 100023;
-    /// The angle between lines `entity_a` and `entity_b` is `val` degrees (`other`: cos = -cos(val)).
+    /// The angle between lines (or normals' axes) `entity_a` and `entity_b` is `val` degrees
+    /// (`other`: cos = -cos(val)).
     Angle = "angle", 100024;
-    /// Lines `entity_a` and `entity_b` are parallel.
+    /// Lines (or normals' axes) `entity_a` and `entity_b` are parallel.
     Parallel = "parallel", 100025;
-    /// Lines `entity_a` and `entity_b` are perpendicular.
+    /// Lines (or normals' axes) `entity_a` and `entity_b` are perpendicular.
     Perpendicular = "perpendicular", 100026;
     /// Arc `entity_a` is tangent to line `entity_b` at its start (or end with `other`).
     ArcLineTangent = "arc_line_tangent", 100027;
@@ -280,21 +283,21 @@ impl ConstraintKind {
         const N: Option<Want> = None;
         let p = Some(Point);
         let l = Some(Line);
+        let d = Some(LineOrNormal);
         let (fields, plane) = match self {
             K::PointsCoincident | K::PtPtDistance => ([p, p, N, N, N, N], Either),
             K::PtPlaneDistance | K::PtInPlane | K::PtFaceDistance | K::PtOnFace => {
                 ([p, N, Some(Workplane), N, N, N], Ignored)
             }
             K::PtLineDistance | K::PtOnLine | K::AtMidpoint => ([p, N, l, N, N, N], Either),
-            K::EqualLengthLines
-            | K::LengthRatio
-            | K::LengthDifference
-            | K::Parallel
-            | K::Perpendicular
-            | K::Angle => ([N, N, l, l, N, N], Either),
+            K::EqualLengthLines | K::LengthRatio | K::LengthDifference => {
+                ([N, N, l, l, N, N], Either)
+            }
+            // Directions: SolveSpace takes a normal's axis wherever it takes a line's.
+            K::Parallel | K::Perpendicular | K::Angle => ([N, N, d, d, N, N], Either),
             K::EqLenPtLineD => ([p, N, l, l, N, N], Either),
             K::EqPtLnDistances => ([p, p, l, l, N, N], Either),
-            K::EqualAngle => ([N, N, l, l, l, l], Either),
+            K::EqualAngle => ([N, N, d, d, d, d], Either),
             K::EqualLineArcLen => ([N, N, l, Some(Arc), N, N], Either),
             K::Symmetric => ([p, p, Some(Workplane), N, N, N], Either),
             K::SymmetricHoriz | K::SymmetricVert => ([p, p, N, N, N, N], Required),

@@ -2,8 +2,8 @@
 
 use super::{Constraint, ConstraintId, Entity, EntityId, ObjectId, Param, ParamId};
 use crate::error::ModelError;
-use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use rustc_hash::FxHashMap as HashMap;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 /// A whole problem: parameters, entities and constraints, kept in the order they were added.
 ///

@@ -189,10 +189,19 @@ impl System {
             c.kind,
             super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical
         ) && c.entity_a.is_none();
+        // The midpoint of a line may be held on a plane instead of at a point.
+        let plane_form =
+            c.kind == super::ConstraintKind::AtMidpoint && c.pt_a.is_none() && c.entity_b.is_some();
         for (i, want) in sig.fields.iter().enumerate() {
             let want = if point_form {
                 match i {
                     0 | 1 => Some(Want::Point),
+                    _ => None,
+                }
+            } else if plane_form {
+                match i {
+                    2 => Some(Want::Line),
+                    3 => Some(Want::Workplane),
                     _ => None,
                 }
             } else {

@@ -18,7 +18,12 @@ pub(crate) struct DenseLdlt {
 
 impl DenseLdlt {
     pub fn new(n: usize) -> Self {
-        Self { n, a: vec![0.0; n * n], l: vec![0.0; n * n], dropped: vec![false; n] }
+        Self {
+            n,
+            a: vec![0.0; n * n],
+            l: vec![0.0; n * n],
+            dropped: vec![false; n],
+        }
     }
 
     /// Position of entry (i, j) in the storage (any order of i, j).
@@ -87,7 +92,11 @@ impl DenseLdlt {
             b[i] = v;
         }
         for i in 0..n {
-            b[i] = if self.dropped[i] { 0.0 } else { b[i] / self.l[i * n + i] };
+            b[i] = if self.dropped[i] {
+                0.0
+            } else {
+                b[i] / self.l[i * n + i]
+            };
         }
         for i in (0..n).rev() {
             let mut v = b[i];

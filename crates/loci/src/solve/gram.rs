@@ -96,7 +96,11 @@ impl Pattern {
             }
             col_ptr[i + 1] = row_idx.len();
         }
-        Self { col_ptr, row_idx, contrib }
+        Self {
+            col_ptr,
+            row_idx,
+            contrib,
+        }
     }
 }
 
@@ -105,7 +109,10 @@ const DENSE_MAX: usize = 24;
 
 /// `G = J Jᵀ` of one component and its rank-revealing factorisation, dense or sparse by size.
 pub(crate) enum Gram {
-    Dense { g: DenseLdlt, contrib: Vec<(u32, u32, u32)> },
+    Dense {
+        g: DenseLdlt,
+        contrib: Vec<(u32, u32, u32)>,
+    },
     Sparse(SparseGram),
 }
 
@@ -125,7 +132,13 @@ impl Gram {
             let contrib = p
                 .contrib
                 .iter()
-                .map(|&(e, a, b)| (g.index(p.row_idx[e as usize], col_of[e as usize]) as u32, a, b))
+                .map(|&(e, a, b)| {
+                    (
+                        g.index(p.row_idx[e as usize], col_of[e as usize]) as u32,
+                        a,
+                        b,
+                    )
+                })
                 .collect();
             return Some(Gram::Dense { g, contrib });
         }
@@ -190,7 +203,11 @@ pub(crate) struct SparseGram {
 
 impl SparseGram {
     fn new(nrows: usize, pattern: Pattern) -> Option<Self> {
-        let Pattern { col_ptr, row_idx, contrib } = pattern;
+        let Pattern {
+            col_ptr,
+            row_idx,
+            contrib,
+        } = pattern;
         let nnz = row_idx.len();
         let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();
         let pattern = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);

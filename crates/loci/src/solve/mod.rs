@@ -92,7 +92,12 @@ impl Solver {
     /// A solver for `group`, with `dragged` parameters moving least.
     #[must_use]
     pub fn new(group: impl Into<GroupId>, dragged: &[ParamId], cfg: Config) -> Self {
-        Self { group: group.into(), dragged: dragged.to_vec(), cfg, cache: Cache::default() }
+        Self {
+            group: group.into(),
+            dragged: dragged.to_vec(),
+            cfg,
+            cache: Cache::default(),
+        }
     }
 
     /// Forgets the compiled structure; the next solve rebuilds it.
@@ -105,7 +110,11 @@ impl Solver {
     /// # Errors
     /// As [`solve`].
     pub fn solve(&mut self, sys: &mut System) -> Result<Report, SolveError> {
-        let shape = (sys.params().len(), sys.entities().len(), sys.constraints().len());
+        let shape = (
+            sys.params().len(),
+            sys.entities().len(),
+            sys.constraints().len(),
+        );
         if self.cache.shape != Some(shape) {
             self.cfg.check()?;
             sys.validate()?;
@@ -356,7 +365,9 @@ fn solve_values(
             .collect();
         let map = |p: usize| col_of_param(p, &col_of_root).map(|c| local[c as usize]);
         if !reuse {
-            cache.components.push(Component::new(kernels, members, &map, cols.len(), scale));
+            cache
+                .components
+                .push(Component::new(kernels, members, &map, cols.len(), scale));
         }
         let comp = &mut cache.components[ci];
         for &c in cols {
@@ -462,7 +473,12 @@ fn refresh(sys: &System, values: &[f64], cache: &mut Cache) {
         }
     }
     for l in &mut cache.links {
-        if let Compiled::Fix { owner: Owner::Constraint(h), p, value } = l {
+        if let Compiled::Fix {
+            owner: Owner::Constraint(h),
+            p,
+            value,
+        } = l
+        {
             if let Some(c) = sys.constraint(*h) {
                 *value = match c.kind {
                     crate::model::ConstraintKind::Diameter => c.val / 2.0,

@@ -105,9 +105,22 @@ impl Component {
                 row_block.push((bi as u32, r as u8));
             }
             let n = cols.len();
-            let active: Vec<u16> = (0..slot_col.len() as u16).filter(|&s| slot_col[s as usize] >= 0).collect();
-            let active_col = active.iter().map(|&s| slot_col[s as usize] as u32).collect();
-            blocks.push(Block { kernel: k, row0: row, jv0: jv, cols, slot_col, active, active_col });
+            let active: Vec<u16> = (0..slot_col.len() as u16)
+                .filter(|&s| slot_col[s as usize] >= 0)
+                .collect();
+            let active_col = active
+                .iter()
+                .map(|&s| slot_col[s as usize] as u32)
+                .collect();
+            blocks.push(Block {
+                kernel: k,
+                row0: row,
+                jv0: jv,
+                cols,
+                slot_col,
+                active,
+                active_col,
+            });
             row += kern.rows;
             jv += kern.rows * n;
         }
@@ -206,8 +219,25 @@ impl Component {
             self.gram = Gram::new(m, &self.columns);
         }
         let mut gram_slot = self.gram.take();
-        let Scratch { r, jv, jn, inv, y, dx, xt, rt, xs, jl } = scratch;
-        for (v, n) in [(&mut *r, m), (&mut *jv, self.nnz), (&mut *jn, self.nnz), (&mut *inv, m), (&mut *y, m)] {
+        let Scratch {
+            r,
+            jv,
+            jn,
+            inv,
+            y,
+            dx,
+            xt,
+            rt,
+            xs,
+            jl,
+        } = scratch;
+        for (v, n) in [
+            (&mut *r, m),
+            (&mut *jv, self.nnz),
+            (&mut *jn, self.nnz),
+            (&mut *inv, m),
+            (&mut *y, m),
+        ] {
             v.clear();
             v.resize(n, 0.0);
         }
@@ -215,12 +245,25 @@ impl Component {
             v.clear();
             v.resize(n, 0.0);
         }
-        let (r, jv, jn, inv, y, dx, xt, rt) =
-            (&mut r[..], &mut jv[..], &mut jn[..], &mut inv[..], &mut y[..], &mut dx[..], &mut xt[..], &mut rt[..]);
+        let (r, jv, jn, inv, y, dx, xt, rt) = (
+            &mut r[..],
+            &mut jv[..],
+            &mut jn[..],
+            &mut inv[..],
+            &mut y[..],
+            &mut dx[..],
+            &mut xt[..],
+            &mut rt[..],
+        );
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
-        let merit = |r: &[f64], inv: &[f64]| r.iter().zip(inv).map(|(a, b)| (a * b) * (a * b)).sum::<f64>();
+        let merit = |r: &[f64], inv: &[f64]| {
+            r.iter()
+                .zip(inv)
+                .map(|(a, b)| (a * b) * (a * b))
+                .sum::<f64>()
+        };
         // Step length of the last accepted step: the next line search starts at twice it, so a
         // problem that needs short steps (a long chain turning far) does not pay for failed
         // full steps every iteration.
@@ -248,7 +291,9 @@ impl Component {
                     jn[idx as usize] *= inv[row as usize];
                 }
             }
-            let Some(gram) = gram_slot.as_mut() else { break };
+            let Some(gram) = gram_slot.as_mut() else {
+                break;
+            };
             gram.assemble(&jn);
             factored = gram.factor(0.0, cfg.rank_tolerance);
             let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
@@ -280,7 +325,11 @@ impl Component {
             // and below ten times the current one. Long chains that must swing far take fewer,
             // longer steps this way (24 -> 18 iterations on 10,000 segments).
             history.push(m0);
-            let m_ref = history.iter().rev().take(NONMONOTONE).fold(0.0f64, |a, &b| a.max(b));
+            let m_ref = history
+                .iter()
+                .rev()
+                .take(NONMONOTONE)
+                .fold(0.0f64, |a, &b| a.max(b));
             let mut alpha = (2.0 * alpha_prev).min(1.0);
             let mut accepted = false;
             if damping.is_none() {

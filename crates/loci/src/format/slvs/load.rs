@@ -1,0 +1,656 @@
+//! From records to loci's model: SolveSpace's handles, the entities requests and groups
+//! generate, and its type numbers mapped onto loci's.
+//!
+//! Handles follow SolveSpace's scheme. A request `r` generates entities `r << 16 | k` (its
+//! main entity at `k = 0`, points from 1, or the point itself at 0 for a datum point; the
+//! normal at 32; the distance at 64) and parameters `r << 16 | i` (point `n`'s coordinates
+//! at `16 + 3n`, the normal's quaternion at 32..35, the distance at 64). A group `g`
+//! generates entities and parameters `0x8000_0000 | g << 16 | i`. Constraints' own
+//! parameters (`0x4000_0000 | ...`, SolveSpace's helper unknowns for points on lines and
+//! parallel lines in 3D) are not needed: loci writes those constraints without them.
+
+use super::codes::{self, ConstraintCode, EntityCode, GroupKind};
+use super::records::{Kind, Record};
+use super::{GroupStatus, Note, ParamLine, SlvsError, SlvsFile, SlvsGroup};
+use crate::geom::quaternion_from_uv;
+use crate::model::{Constraint, Entity, EntityId, GroupId, ObjectId, Param, ParamId, System};
+use std::collections::{HashMap, HashSet};
+
+/// The group of geometry loci holds constant: copies a group computes from earlier groups
+/// and faces of solids. No solve ever makes it unknown.
+pub const FIXED_GROUP: GroupId = GroupId(0);
+
+/// SolveSpace's group of the three reference planes, which it never solves.
+const REFERENCES: u32 = 1;
+
+const GROUP_BIT: u32 = 0x8000_0000;
+const CONSTRAINT_BIT: u32 = 0x4000_0000;
+
+/// Hands out handles no object of the file uses, for the constants loci adds.
+struct Fresh {
+    next: u32,
+    used: HashSet<u32>,
+}
+
+impl Fresh {
+    fn new(used: HashSet<u32>) -> Self {
+        Self {
+            next: 0xF000_0000,
+            used,
+        }
+    }
+
+    fn take(&mut self) -> u32 {
+        while self.used.contains(&self.next) {
+            self.next += 1;
+        }
+        self.used.insert(self.next);
+        self.next
+    }
+}
+
+struct Builder<'a> {
+    records: &'a [Record],
+    sys: System,
+    notes: Vec<Note>,
+    /// Request handle -> its group.
+    requests: HashMap<u32, u32>,
+    groups: HashMap<u32, usize>,
+    fresh_param: Fresh,
+    fresh_entity: Fresh,
+    /// File entities loci did not model, with why.
+    skipped: HashMap<u32, &'static str>,
+    /// Every entity handle of the file, with its line.
+    entity_line: HashMap<u32, usize>,
+    constraint_line: HashMap<u32, usize>,
+    param_lines: Vec<ParamLine>,
+}
+
+/// Builds the model of a parsed file.
+pub(crate) fn build(
+    bytes: Vec<u8>,
+    spans: Vec<(usize, usize)>,
+    records: &[Record],
+    solid_lines: usize,
+) -> Result<SlvsFile, SlvsError> {
+    let mut param_handles = HashSet::new();
+    let mut entity_handles = HashSet::new();
+    for r in records {
+        match r.kind {
+            Kind::Param => {
+                param_handles.insert(r.hex("Param.h.v."));
+            }
+            Kind::Entity => {
+                entity_handles.insert(r.hex("Entity.h.v"));
+            }
+            _ => {}
+        }
+    }
+    let mut b = Builder {
+        records,
+        sys: System::new(),
+        notes: Vec::new(),
+        requests: HashMap::new(),
+        groups: HashMap::new(),
+        fresh_param: Fresh::new(param_handles),
+        fresh_entity: Fresh::new(entity_handles),
+        skipped: HashMap::new(),
+        entity_line: HashMap::new(),
+        constraint_line: HashMap::new(),
+        param_lines: Vec::new(),
+    };
+    let mut groups = b.groups()?;
+    b.requests()?;
+    b.params()?;
+    b.entities()?;
+    b.constraints(&mut groups)?;
+    if solid_lines > 0 {
+        b.notes.push(Note {
+            line: 0,
+            message: format!(
+                "skipped {solid_lines} lines of the saved solid (mesh and surfaces), which \
+                 SolveSpace regenerates"
+            ),
+        });
+    }
+    b.sys.validate().map_err(|e| {
+        let line = match e.clone() {
+            crate::ModelError::Dangling { owner, .. }
+            | crate::ModelError::WrongKind { owner, .. }
+            | crate::ModelError::MissingField { owner, .. }
+            | crate::ModelError::NonFinite { owner, .. } => b.line_of(owner),
+            crate::ModelError::NeedsWorkplane { constraint, .. } => {
+                b.line_of(ObjectId::Constraint(constraint))
+            }
+            crate::ModelError::Cycle { entity } => b.line_of(ObjectId::Entity(entity)),
+            _ => 0,
+        };
+        SlvsError::Model { line, source: e }
+    })?;
+    groups.sort_by_key(|g| (g.order, g.h));
+    Ok(SlvsFile {
+        bytes,
+        spans,
+        system: b.sys,
+        groups,
+        notes: b.notes,
+        param_lines: b.param_lines,
+    })
+}
+
+impl Builder<'_> {
+    fn line_of(&self, o: ObjectId) -> usize {
+        match o {
+            ObjectId::Entity(h) => self.entity_line.get(&h.0).copied().unwrap_or(0),
+            ObjectId::Constraint(h) => self.constraint_line.get(&h.0).copied().unwrap_or(0),
+            ObjectId::Param(h) => self
+                .param_lines
+                .iter()
+                .find(|p| p.h == h)
+                .map_or(0, |p| p.h_line + 1),
+        }
+    }
+
+    fn handle(r: &Record, key: &'static str) -> Result<u32, SlvsError> {
+        match r.hex(key) {
+            0 => Err(SlvsError::MissingHandle {
+                line: r.line,
+                record: r.kind.name(),
+            }),
+            h => Ok(h),
+        }
+    }
+
+    fn groups(&mut self) -> Result<Vec<SlvsGroup>, SlvsError> {
+        let mut out: Vec<SlvsGroup> = Vec::new();
+        for r in self.records.iter().filter(|r| r.kind == Kind::Group) {
+            let h = Self::handle(r, "Group.h.v")?;
+            if self.groups.contains_key(&h) {
+                return Err(SlvsError::Duplicate {
+                    line: r.line,
+                    record: "Group",
+                    handle: h,
+                });
+            }
+            let kind = GroupKind::from_code(r.int("Group.type"));
+            let status = if h == REFERENCES {
+                GroupStatus::References
+            } else if kind.is_sketch() {
+                GroupStatus::Solve
+            } else {
+                GroupStatus::Unsupported(format!("{} groups are not modelled by loci", kind.name()))
+            };
+            self.groups.insert(h, out.len());
+            out.push(SlvsGroup {
+                h: GroupId(h),
+                name: r.text("Group.name").to_string(),
+                kind,
+                order: r.int("Group.order"),
+                allow_redundant: r.flag("Group.allowRedundant"),
+                all_dims_reference: r.flag("Group.allDimsReference"),
+                line: r.line,
+                status,
+            });
+        }
+        if out.is_empty() {
+            return Err(SlvsError::NoGroups);
+        }
+        Ok(out)
+    }
+
+    fn requests(&mut self) -> Result<(), SlvsError> {
+        for r in self.records.iter().filter(|r| r.kind == Kind::Request) {
+            let h = Self::handle(r, "Request.h.v")?;
+            let group = r.hex("Request.group.v");
+            if !self.groups.contains_key(&group) {
+                return Err(SlvsError::Dangling {
+                    line: r.line_of("Request.group.v"),
+                    owner: format!("request {h:08x}"),
+                    field: "group",
+                    target: "group",
+                    handle: group,
+                });
+            }
+            if self.requests.insert(h, group).is_some() {
+                return Err(SlvsError::Duplicate {
+                    line: r.line,
+                    record: "Request",
+                    handle: h,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// The group that owns a request's or a group's object with handle `h`.
+    fn owner_group(&self, h: u32) -> Option<u32> {
+        if h & GROUP_BIT != 0 {
+            let g = (h >> 16) & 0x7fff;
+            self.groups.contains_key(&g).then_some(g)
+        } else {
+            self.requests.get(&(h >> 16)).copied()
+        }
+    }
+
+    fn params(&mut self) -> Result<(), SlvsError> {
+        let mut orphans = 0;
+        for r in self.records.iter().filter(|r| r.kind == Kind::Param) {
+            let h = Self::handle(r, "Param.h.v.")?;
+            let val_line = r
+                .fields
+                .iter()
+                .find(|f| f.key == "Param.val")
+                .map(|f| f.line - 1);
+            self.param_lines.push(ParamLine {
+                h: ParamId(h),
+                h_line: r.line_of("Param.h.v.") - 1,
+                val_line,
+            });
+            if h & GROUP_BIT == 0 && h & CONSTRAINT_BIT != 0 {
+                continue;
+            }
+            let Some(group) = self.owner_group(h) else {
+                orphans += 1;
+                continue;
+            };
+            self.sys
+                .add_param(Param::new(h, group, r.float("Param.val")))
+                .map_err(|e| match e {
+                    crate::ModelError::DuplicateHandle { .. } => SlvsError::Duplicate {
+                        line: r.line,
+                        record: "Param",
+                        handle: h,
+                    },
+                    e => SlvsError::Model {
+                        line: r.line,
+                        source: e,
+                    },
+                })?;
+        }
+        if orphans > 0 {
+            self.notes.push(Note {
+                line: 0,
+                message: format!(
+                    "skipped {orphans} parameters whose request or group does not exist"
+                ),
+            });
+        }
+        Ok(())
+    }
+
+    /// A constant parameter holding `v`.
+    fn constant(&mut self, v: f64) -> u32 {
+        let h = self.fresh_param.take();
+        // Handles from `Fresh` are unused and values come from checked numbers.
+        let _ = self.sys.add_param(Param::new(h, FIXED_GROUP, v));
+        h
+    }
+
+    fn constant_point(&mut self, p: [f64; 3]) -> u32 {
+        let params = p.map(|v| self.constant(v));
+        let h = self.fresh_entity.take();
+        let _ = self
+            .sys
+            .add_entity(Entity::point_3d(h, FIXED_GROUP.0, params));
+        h
+    }
+
+    fn constant_normal(&mut self, q: [f64; 4]) -> u32 {
+        let params = q.map(|v| self.constant(v));
+        let h = self.fresh_entity.take();
+        let _ = self
+            .sys
+            .add_entity(Entity::normal_3d(h, FIXED_GROUP.0, params));
+        h
+    }
+
+    fn entities(&mut self) -> Result<(), SlvsError> {
+        for r in self.records.iter().filter(|r| r.kind == Kind::Entity) {
+            let h = Self::handle(r, "Entity.h.v")?;
+            if self.entity_line.insert(h, r.line).is_some() {
+                return Err(SlvsError::Duplicate {
+                    line: r.line,
+                    record: "Entity",
+                    handle: h,
+                });
+            }
+            let code = r.int("Entity.type");
+            let Some(kind) = EntityCode::from_code(code) else {
+                return Err(SlvsError::UnknownType {
+                    line: r.line_of("Entity.type"),
+                    record: "Entity",
+                    code,
+                });
+            };
+            if let Some(e) = self.entity(h, kind, r)? {
+                let _ = self.sys.add_entity(e);
+            }
+        }
+        Ok(())
+    }
+
+    /// The model of file entity `h`, or `None` when loci skips it (with a note).
+    fn entity(
+        &mut self,
+        h: u32,
+        kind: EntityCode,
+        r: &Record,
+    ) -> Result<Option<Entity>, SlvsError> {
+        use EntityCode as E;
+        let generated = h & GROUP_BIT != 0;
+        let group = if generated {
+            FIXED_GROUP.0
+        } else {
+            match self.owner_group(h) {
+                Some(g) => g,
+                None => {
+                    self.skip(h, r, kind, "its request does not exist");
+                    return Ok(None);
+                }
+            }
+        };
+        let wp = match r.hex("Entity.workplane.v") {
+            0 => None,
+            w => Some(w),
+        };
+        let pt = |i: usize| r.hex(POINT_KEYS[i]);
+        let act_point = [
+            r.float("Entity.actPoint.x"),
+            r.float("Entity.actPoint.y"),
+            r.float("Entity.actPoint.z"),
+        ];
+        let act_normal = [
+            r.float("Entity.actNormal.w"),
+            r.float("Entity.actNormal.vx"),
+            r.float("Entity.actNormal.vy"),
+            r.float("Entity.actNormal.vz"),
+        ];
+        let base = h & 0xffff_0000;
+        let k = h & 0xffff;
+        let param = |i: u32| base | i;
+        let e = match kind {
+            E::PointIn3d | E::PointIn2d if !generated && k < 32 => {
+                // A datum point is its request's entity 0; other points count from 1.
+                let n = k.saturating_sub(1);
+                let p = |j: u32| param(16 + 3 * n + j);
+                if kind == E::PointIn3d {
+                    Entity::point_3d(h, group, [p(0), p(1), p(2)])
+                } else {
+                    let Some(wp) = wp else {
+                        return Err(SlvsError::MissingField {
+                            line: r.line,
+                            owner: format!("entity {h:08x}"),
+                            field: "Entity.workplane.v",
+                        });
+                    };
+                    Entity::point_2d(h, group, wp, [p(0), p(1)])
+                }
+            }
+            E::NormalIn3d if !generated && k == 32 => {
+                Entity::normal_3d(h, group, [param(32), param(33), param(34), param(35)])
+            }
+            E::Distance if !generated && k == 64 => Entity::distance(h, group, wp, param(64)),
+            E::NormalIn2d => match wp {
+                Some(wp) => Entity::normal_2d(h, group, wp),
+                None => {
+                    return Err(SlvsError::MissingField {
+                        line: r.line,
+                        owner: format!("entity {h:08x}"),
+                        field: "Entity.workplane.v",
+                    })
+                }
+            },
+            E::PointCopy => {
+                let params = act_point.map(|v| self.constant(v));
+                Entity::point_3d(h, FIXED_GROUP.0, params)
+            }
+            E::NormalCopy => {
+                let params = act_normal.map(|v| self.constant(v));
+                Entity::normal_3d(h, FIXED_GROUP.0, params)
+            }
+            E::DistanceCopy => {
+                let p = self.constant(r.float("Entity.actDistance"));
+                Entity::distance(h, FIXED_GROUP.0, None, p)
+            }
+            E::Face => {
+                // A face is a plane: its point and its (unit) normal vector, which SolveSpace
+                // saves as the vector part of `actNormal`.
+                let n = [act_normal[1], act_normal[2], act_normal[3]];
+                let Some(q) = rotation_to(n) else {
+                    self.skip(h, r, kind, "its normal is zero");
+                    return Ok(None);
+                };
+                let origin = self.constant_point(act_point);
+                let normal = self.constant_normal(q);
+                Entity::workplane(h, FIXED_GROUP.0, origin, normal)
+            }
+            E::Workplane => Entity::workplane(h, group, pt(0), r.hex("Entity.normal.v")),
+            E::LineSegment => Entity::line(h, group, wp, pt(0), pt(1)),
+            E::Cubic if r.int("Entity.extraPoints") == 0 => {
+                Entity::cubic(h, group, wp, [pt(0), pt(1), pt(2), pt(3)])
+            }
+            E::Cubic => {
+                self.skip(
+                    h,
+                    r,
+                    kind,
+                    "a spline through more than four points is not modelled (its points are)",
+                );
+                return Ok(None);
+            }
+            E::Circle => Entity::circle(
+                h,
+                group,
+                wp,
+                pt(0),
+                r.hex("Entity.normal.v"),
+                r.hex("Entity.distance.v"),
+            ),
+            E::ArcOfCircle => match wp {
+                Some(wp) => {
+                    Entity::arc(h, group, wp, r.hex("Entity.normal.v"), pt(0), pt(1), pt(2))
+                }
+                None => {
+                    self.skip(h, r, kind, "an arc outside a workplane is not modelled");
+                    return Ok(None);
+                }
+            },
+            E::CubicPeriodic => {
+                self.skip(
+                    h,
+                    r,
+                    kind,
+                    "periodic splines are not modelled (their points are)",
+                );
+                return Ok(None);
+            }
+            E::TtfText | E::Image => {
+                self.skip(
+                    h,
+                    r,
+                    kind,
+                    "text and images are not modelled (their points are)",
+                );
+                return Ok(None);
+            }
+            E::PointIn3d | E::PointIn2d | E::NormalIn3d | E::Distance => {
+                self.skip(h, r, kind, "its handle is not one a request generates");
+                return Ok(None);
+            }
+        };
+        Ok(Some(e))
+    }
+
+    fn skip(&mut self, h: u32, r: &Record, kind: EntityCode, why: &'static str) {
+        self.skipped.insert(h, kind.name());
+        self.notes.push(Note {
+            line: r.line,
+            message: format!("entity {h:08x} ({}) skipped: {why}", kind.name()),
+        });
+    }
+
+    fn constraints(&mut self, groups: &mut [SlvsGroup]) -> Result<(), SlvsError> {
+        for r in self.records.iter().filter(|r| r.kind == Kind::Constraint) {
+            let h = Self::handle(r, "Constraint.h.v")?;
+            if self.constraint_line.insert(h, r.line).is_some() {
+                return Err(SlvsError::Duplicate {
+                    line: r.line,
+                    record: "Constraint",
+                    handle: h,
+                });
+            }
+            let code = r.int("Constraint.type");
+            let kind = match codes::constraint(code) {
+                Some(ConstraintCode::Kind(k)) => k,
+                Some(ConstraintCode::Comment) => {
+                    self.notes.push(Note {
+                        line: r.line,
+                        message: format!("constraint {h:08x} is a comment: no equations"),
+                    });
+                    continue;
+                }
+                None => {
+                    return Err(SlvsError::UnknownType {
+                        line: r.line_of("Constraint.type"),
+                        record: "Constraint",
+                        code,
+                    })
+                }
+            };
+            let g = r.hex("Constraint.group.v");
+            let Some(&gi) = self.groups.get(&g) else {
+                return Err(SlvsError::Dangling {
+                    line: r.line_of("Constraint.group.v"),
+                    owner: format!("constraint {h:08x}"),
+                    field: "group",
+                    target: "group",
+                    handle: g,
+                });
+            };
+            // Every entity a constraint names must exist in the file; an entity loci skipped
+            // makes the constraint (and so its group) impossible to solve here.
+            let mut unmodelled = None;
+            for key in ENTITY_KEYS {
+                let e = r.hex(key);
+                if e == 0 {
+                    continue;
+                }
+                if !self.entity_line.contains_key(&e) {
+                    return Err(SlvsError::Dangling {
+                        line: r.line_of(key),
+                        owner: format!("constraint {h:08x}"),
+                        field: key,
+                        target: "entity",
+                        handle: e,
+                    });
+                }
+                if let Some(what) = self.skipped.get(&e) {
+                    unmodelled = Some(format!(
+                        "constraint {h:08x} ({}) refers to entity {e:08x} ({what}), which loci \
+                         does not model",
+                        kind.name()
+                    ));
+                }
+            }
+            if let Some(why) = unmodelled {
+                if groups[gi].status == GroupStatus::Solve {
+                    groups[gi].status = GroupStatus::Unsupported(why);
+                }
+                continue;
+            }
+            let nz = |v: u32| (v != 0).then_some(EntityId(v));
+            let reference = r.flag("Constraint.reference")
+                || (groups[gi].all_dims_reference && kind.has_value());
+            let c = Constraint {
+                h: crate::ConstraintId(h),
+                group: GroupId(g),
+                kind,
+                workplane: nz(r.hex("Constraint.workplane.v")),
+                val: r.float("Constraint.valA"),
+                pt_a: nz(r.hex("Constraint.ptA.v")),
+                pt_b: nz(r.hex("Constraint.ptB.v")),
+                entity_a: nz(r.hex("Constraint.entityA.v")),
+                entity_b: nz(r.hex("Constraint.entityB.v")),
+                entity_c: nz(r.hex("Constraint.entityC.v")),
+                entity_d: nz(r.hex("Constraint.entityD.v")),
+                other: r.flag("Constraint.other"),
+                other2: r.flag("Constraint.other2"),
+                reference,
+            };
+            self.sys.add_constraint(c).map_err(|e| SlvsError::Model {
+                line: r.line,
+                source: e,
+            })?;
+        }
+        Ok(())
+    }
+}
+
+const POINT_KEYS: [&str; 4] = [
+    "Entity.point[0].v",
+    "Entity.point[1].v",
+    "Entity.point[2].v",
+    "Entity.point[3].v",
+];
+
+const ENTITY_KEYS: [&str; 7] = [
+    "Constraint.workplane.v",
+    "Constraint.ptA.v",
+    "Constraint.ptB.v",
+    "Constraint.entityA.v",
+    "Constraint.entityB.v",
+    "Constraint.entityC.v",
+    "Constraint.entityD.v",
+];
+
+/// A unit quaternion whose N axis is along `n`, or `None` for a zero vector.
+fn rotation_to(n: [f64; 3]) -> Option<[f64; 4]> {
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    if !(len > 1e-12) {
+        return None;
+    }
+    let n = n.map(|v| v / len);
+    // Any unit u perpendicular to n: cross n with the axis it is least aligned with.
+    let a = if n[0].abs() < 0.6 {
+        [1.0, 0.0, 0.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    let u = cross(a, n);
+    let ul = (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]).sqrt();
+    let u = u.map(|v| v / ul);
+    let v = cross(n, u);
+    Some(quaternion_from_uv(u, v))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::Quat;
+
+    #[test]
+    fn rotation_to_maps_z_onto_the_normal() {
+        for n in [[1.0, 0.0, 0.0], [0.0, 0.0, -2.0], [0.3, -0.4, 0.5]] {
+            let q = rotation_to(n).unwrap();
+            let q = Quat {
+                w: q[0],
+                x: q[1],
+                y: q[2],
+                z: q[3],
+            };
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            let got = q.n();
+            for i in 0..3 {
+                assert!((got.at(i) - n[i] / len).abs() < 1e-12, "{n:?}");
+            }
+        }
+        assert!(rotation_to([0.0; 3]).is_none());
+    }
+}
