@@ -57,19 +57,14 @@ fn residual(k: &Kernel, xs: &[f64], val: f64, other: bool) -> f64 {
 
 /// The angle in degrees between the two lines, as `val` means it (the supplement with
 /// `other`). In space the residual at 90 degrees is the cosine; in a workplane the residual
-/// at 0 degrees is the signed sine and at 90 degrees the cosine, signed by the branch.
+/// at 0 degrees is the signed angle itself (in radians, wrapped to (-180, 180] degrees).
 fn angle(k: &Kernel, xs: &[f64]) -> f64 {
     let theta = match k.eq.wp {
         None => {
             let c = residual(k, xs, 90.0, false) + 90f64.to_radians().cos();
             c.clamp(-1.0, 1.0).acos()
         }
-        Some(_) => {
-            let s = residual(k, xs, 0.0, false);
-            let r90 = residual(k, xs, 90.0, false);
-            let c = if k.eq.choice == 1 { r90 } else { -r90 };
-            s.abs().atan2(c)
-        }
+        Some(_) => residual(k, xs, 0.0, false).abs(),
     }
     .to_degrees();
     if k.eq.other {
