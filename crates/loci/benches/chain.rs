@@ -7,7 +7,7 @@
 // criterion_group! generates an undocumented public function.
 #![allow(missing_docs)]
 
-#[path = "../tests/common/chain.rs"]
+#[path = "../tests/common/perturbed_chain.rs"]
 mod chain;
 
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::chain::{chain, Chain};
+use common::perturbed_chain::{chain, Chain};
 use common::{dist, uv};
 use loci::{Outcome, System};
 

@@ -424,7 +424,7 @@ fn solving_twice_is_bit_identical() {
         Box::new(|| triangle([30.0, 40.0, 50.0]).0.sys),
         Box::new(|| triangle([10.0, 20.0, 50.0]).0.sys),
         Box::new(|| point_off_circle().0.sys),
-        Box::new(|| common::chain::chain(300, 7, 0.3).system),
+        Box::new(|| common::perturbed_chain::chain(300, 7, 0.3).system),
     ];
     for make in cases {
         let (mut x, mut y) = (make(), make());

@@ -1,7 +1,7 @@
 //! Helpers shared by the integration tests: a small sketch builder over the public API.
 #![allow(dead_code)]
 
-pub mod chain;
+pub mod perturbed_chain;
 
 use loci::{Constraint, ConstraintKind, Entity, Param, System};
 
