@@ -174,11 +174,12 @@ kinds! {
     LengthDifference = "length_difference", 100033;
     /// Length of arc `entity_a` divided by length of arc `entity_b` is `val`.
     ArcArcLenRatio = "arc_arc_len_ratio", 100034;
-    /// Length of arc `entity_a` divided by length of line `entity_b` is `val`.
+    /// Length of arc `entity_b` divided by length of line `entity_a` is `val` (SolveSpace's order:
+    /// the line first).
     ArcLineLenRatio = "arc_line_len_ratio", 100035;
     /// Length of arc `entity_a` minus length of arc `entity_b` is `val`.
     ArcArcDifference = "arc_arc_difference", 100036;
-    /// Length of arc `entity_a` minus length of line `entity_b` is `val`.
+    /// Length of arc `entity_b` minus length of line `entity_a` is `val` (the line first).
     ArcLineDifference = "arc_line_difference", 100037;
 }
 
@@ -316,7 +317,7 @@ impl ConstraintKind {
             K::ArcArcLenRatio | K::ArcArcDifference => {
                 ([N, N, Some(Arc), Some(Arc), N, N], Ignored)
             }
-            K::ArcLineLenRatio | K::ArcLineDifference => ([N, N, Some(Arc), l, N, N], Ignored),
+            K::ArcLineLenRatio | K::ArcLineDifference => ([N, N, l, Some(Arc), N, N], Either),
         };
         Signature { fields, plane }
     }
