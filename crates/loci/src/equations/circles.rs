@@ -43,7 +43,9 @@ fn arc_length<S: Scalar>(ent: &Ent, g: &Geo<S>) -> S {
 
 /// A line's length projected into `w` (or in space).
 fn line_length_in<S: Scalar>(ent: &Ent, g: &Geo<S>, w: Option<&super::refs::Frame>) -> S {
-    let Ent::Line(l) = ent else { unreachable!("validated: a line") };
+    let Ent::Line(l) = ent else {
+        unreachable!("validated: a line")
+    };
     g.line_dir(l, w).norm()
 }
 

@@ -53,7 +53,11 @@ fn arc_relation(fx: &mut Fx, f: Form, kind: K) -> Built {
         line_of_length(fx, FIXED, f, 0.75 * PI, 0.0).0
     };
     // SolveSpace's order for the arc-line relations: the line first.
-    let c = if with_arc { fx.con(kind, f).with_entities([a, b, 0, 0]) } else { fx.con(kind, f).with_entities([b, a, 0, 0]) };
+    let c = if with_arc {
+        fx.con(kind, f).with_entities([a, b, 0, 0])
+    } else {
+        fx.con(kind, f).with_entities([b, a, 0, 0])
+    };
     match kind {
         K::ArcArcLenRatio => Built::new(
             c.with_val(1.0),
