@@ -52,7 +52,12 @@ fn arc_relation(fx: &mut Fx, f: Form, kind: K) -> Built {
     } else {
         line_of_length(fx, FIXED, f, 0.75 * PI, 0.0).0
     };
-    let c = fx.con(kind, f).with_entities([a, b, 0, 0]);
+    // SolveSpace's order for the arc-line relations: the line first.
+    let c = if with_arc {
+        fx.con(kind, f).with_entities([a, b, 0, 0])
+    } else {
+        fx.con(kind, f).with_entities([b, a, 0, 0])
+    };
     match kind {
         K::ArcArcLenRatio => Built::new(
             c.with_val(1.0),
@@ -274,7 +279,7 @@ fn arc_length_counts_the_counter_clockwise_sweep() {
         let line = fx.line(FIXED, Plane, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0]);
         let one = compile(
             &fx.sys,
-            &c.with_entities([arc, line, 0, 0]).with_val(len - 1.0),
+            &c.with_entities([line, arc, 0, 0]).with_val(len - 1.0),
         );
         let r = one.residuals(&one.x(&fx.sys));
         assert!(r[0].abs() < 1e-12, "{from} -> {to}: {r:?}");
