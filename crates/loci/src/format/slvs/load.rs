@@ -562,12 +562,55 @@ impl Builder<'_> {
             self.frozen.insert(h, g);
             return None;
         };
+        // Start where the source and the saved translation put it: SolveSpace saves
+        // `actPoint` as of its last regeneration, which need not be current.
+        let at = match (self.position(EntityId(src)), self.values(translation)) {
+            (Some(b), Some(t)) => [0, 1, 2].map(|i| b[i] + f64::from(times) * t[i]),
+            _ => at,
+        };
         let params = at.map(|v| {
             let p = self.fresh_param.take();
             let _ = self.sys.add_param(Param::new(p, g, v));
             p
         });
         Some(Entity::point_n_trans(h, g, params, src, translation, times))
+    }
+
+    /// The values of parameters `ps`, if all are in the model.
+    fn values<const N: usize>(&self, ps: [u32; N]) -> Option<[f64; N]> {
+        let mut out = [0.0; N];
+        for (o, p) in out.iter_mut().zip(ps) {
+            *o = self.sys.value(crate::ParamId(p))?;
+        }
+        Some(out)
+    }
+
+    /// Where point `h` is, from the current parameter values.
+    fn position(&self, h: EntityId) -> Option<[f64; 3]> {
+        use crate::geom::Quat;
+        let e = self.sys.entity(h)?;
+        match &e.kind {
+            crate::EntityKind::PointIn3d { params }
+            | crate::EntityKind::PointNTrans { params, .. } => self.values(params.map(|p| p.0)),
+            crate::EntityKind::PointIn2d { params } => {
+                let [u, v] = self.values(params.map(|p| p.0))?;
+                let crate::EntityKind::Workplane { origin, normal } =
+                    &self.sys.entity(e.workplane?)?.kind
+                else {
+                    return None;
+                };
+                let o = self.position(*origin)?;
+                let crate::EntityKind::NormalIn3d { params } = &self.sys.entity(*normal)?.kind
+                else {
+                    return None;
+                };
+                let [w, x, y, z] = self.values(params.map(|p| p.0))?;
+                let q = Quat { w, x, y, z };
+                let (qu, qv) = (q.u(), q.v());
+                Some([0, 1, 2].map(|i| o[i] + u * qu.at(i) + v * qv.at(i)))
+            }
+            _ => None,
+        }
     }
 
     /// Whether file entity `h` is a face (a workplane loci made for it).
