@@ -57,9 +57,11 @@ pub(crate) fn compile_group(
         let me = ObjectId::Entity(e.h);
         let mut l = Locals::default();
         let (kind, ents, val) = match &e.kind {
-            EntityKind::NormalIn3d { .. } => {
-                (EqKind::UnitQuaternion, vec![r.entity(me, e.h, &mut l)?], 0.0)
-            }
+            EntityKind::NormalIn3d { .. } => (
+                EqKind::UnitQuaternion,
+                vec![r.entity(me, e.h, &mut l)?],
+                0.0,
+            ),
             EntityKind::ArcOfCircle { .. } => {
                 (EqKind::ArcRadii, vec![r.entity(me, e.h, &mut l)?], 0.0)
             }
@@ -89,7 +91,11 @@ pub(crate) fn compile_group(
         };
         // An entity of this group whose parameters all belong to earlier groups (a copy) has
         // nothing to solve: its condition holds or not, but it is no equation of this group.
-        if !l.params.iter().any(|&p| sys.params()[p as usize].group == group) {
+        if !l
+            .params
+            .iter()
+            .any(|&p| sys.params()[p as usize].group == group)
+        {
             continue;
         }
         let eq = Equation {

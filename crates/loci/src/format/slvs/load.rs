@@ -457,7 +457,10 @@ impl Builder<'_> {
                     FACE_N_TRANS if copier => match self.translated(h, act_point) {
                         Some(e) => {
                             let p = self.fresh_entity.take();
-                            let e = Entity { h: EntityId(p), ..e };
+                            let e = Entity {
+                                h: EntityId(p),
+                                ..e
+                            };
                             let _ = self.sys.add_entity(e);
                             p
                         }
@@ -855,23 +858,11 @@ impl Copier {
                     TWO_SIDED => false,
                     _ => return None,
                 };
-                let v = r.float("Group.valA");
-                if !(1.0..=1e6).contains(&v) {
-                    return None;
-                }
-                // Copy `a` of `a0..n` sits at `2a` translations (one side) or centred
-                // about the original (two sides); the last copy has its own number.
-                let mut n = v as i64;
-                let mut a0 = 0;
-                if one_sided && r.flag("Group.skipFirst") {
-                    a0 += 1;
-                    n += 1;
-                }
-                for a in a0..n {
-                    let t = a * 2 - if one_sided { 0 } else { n - 1 };
-                    let copy = if a == n - 1 { Self::LAST } else { a as u32 };
-                    times.insert(copy, i32::try_from(t).ok()?);
-                }
+                times = Self::repeat_times(
+                    r.float("Group.valA"),
+                    one_sided,
+                    r.flag("Group.skipFirst"),
+                )?;
                 wp
             }
             _ => return None,
@@ -887,6 +878,29 @@ impl Copier {
             times,
             workplane,
         })
+    }
+
+    /// Copy number -> times applied for a step and repeat of `copies` copies. Copy `a` of
+    /// `a0..n` sits at `2a` translations (one side) or centred about the original (two
+    /// sides); the last copy has its own number. (SolveSpace's translation vector is half
+    /// the step.)
+    fn repeat_times(copies: f64, one_sided: bool, skip_first: bool) -> Option<HashMap<u32, i32>> {
+        if !(1.0..=1e6).contains(&copies) {
+            return None;
+        }
+        let mut n = copies as i64;
+        let mut a0 = 0;
+        if one_sided && skip_first {
+            a0 += 1;
+            n += 1;
+        }
+        let mut times = HashMap::new();
+        for a in a0..n {
+            let t = a * 2 - if one_sided { 0 } else { n - 1 };
+            let copy = if a == n - 1 { Self::LAST } else { a as u32 };
+            times.insert(copy, i32::try_from(t).ok()?);
+        }
+        Some(times)
     }
 
     fn times(&self, copy: u32) -> Option<i32> {
@@ -942,6 +956,26 @@ fn rotation_to(n: [f64; 3]) -> Option<[f64; 4]> {
 mod tests {
     use super::*;
     use crate::geom::Quat;
+
+    #[test]
+    fn step_and_repeat_copies_are_numbered_as_solvespace_does() {
+        let sorted = |m: HashMap<u32, i32>| {
+            let mut v: Vec<(u32, i32)> = m.into_iter().collect();
+            v.sort_unstable();
+            v
+        };
+        // One side, three copies: the original's place, then 2t and 4t (the last).
+        let t = Copier::repeat_times(3.0, true, false).unwrap();
+        assert_eq!(sorted(t), vec![(0, 0), (1, 2), (Copier::LAST, 4)]);
+        // Skipping the first keeps three copies, moved one step on.
+        let t = Copier::repeat_times(3.0, true, true).unwrap();
+        assert_eq!(sorted(t), vec![(1, 2), (2, 4), (Copier::LAST, 6)]);
+        // Two sides: centred on the original.
+        let t = Copier::repeat_times(3.0, false, false).unwrap();
+        assert_eq!(sorted(t), vec![(0, -2), (1, 0), (Copier::LAST, 2)]);
+        assert!(Copier::repeat_times(0.0, true, false).is_none());
+        assert!(Copier::repeat_times(f64::NAN, true, false).is_none());
+    }
 
     #[test]
     fn rotation_to_maps_z_onto_the_normal() {
