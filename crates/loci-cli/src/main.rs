@@ -1,8 +1,9 @@
-//! `loci`: solve constraint problems from the command line.
+//! `loci`: solve and check constraint problems from the command line.
 //!
 //! Exit status: 0 solved (okay or okay with redundant constraints), 1 inconsistent,
 //! 2 did not converge, 3 bad input (unreadable, malformed or invalid model).
 
+mod check;
 mod conformance;
 mod report;
 mod slvs;
@@ -37,6 +38,21 @@ enum Command {
         /// the name's extension).
         #[arg(short, long)]
         output: Option<PathBuf>,
+    },
+    /// Diagnose a problem file: degrees of freedom entity by entity, redundant and
+    /// conflicting constraints, over-constrained blocks, reference measurements.
+    Check {
+        /// A loci JSON problem.
+        file: PathBuf,
+        /// Print the diagnosis as JSON instead of a report.
+        #[arg(long)]
+        json: bool,
+        /// Check this group instead of the one the file names.
+        #[arg(long)]
+        group: Option<u32>,
+        /// List fixed entities too, not only those that can move.
+        #[arg(long)]
+        all: bool,
     },
     /// Convert a SolveSpace `.slvs` file to a loci JSON problem.
     Convert {
@@ -124,6 +140,35 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
                     .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?;
             }
             Ok(exit_code(rep.outcome))
+        }
+        Command::Check {
+            file,
+            json,
+            group,
+            all,
+        } => {
+            let text = std::fs::read_to_string(&file)
+                .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", file.display()))?;
+            let problem = Problem::from_json(&text)
+                .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+            let mut req = problem.request();
+            if let Some(g) = group {
+                req.group = g.into();
+            }
+            let d = loci::diagnose(&problem.system, req.group, &req.config())
+                .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+            if json {
+                println!(
+                    "{}",
+                    serde_json::to_string_pretty(&d).map_err(|e| anyhow::anyhow!("{e}"))?
+                );
+            } else {
+                print!(
+                    "{}",
+                    check::render(&file.display().to_string(), &problem.system, &d, all)
+                );
+            }
+            Ok(check::exit_code(&d))
         }
         Command::Convert {
             file,

@@ -32,6 +32,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod diagnose;
 mod equations;
 mod error;
 pub mod format;
@@ -39,6 +40,10 @@ pub mod geom;
 mod model;
 mod solve;
 
+pub use diagnose::{
+    diagnose, ConflictSet, Diagnosis, EntityFreedom, Measurement, Member, Motion, OverConstrained,
+    RedundantSet,
+};
 pub use error::{ModelError, SolveError};
 pub use model::{
     Constraint, ConstraintId, ConstraintKind, Entity, EntityId, EntityKind, EntityType, GroupId,

@@ -491,7 +491,10 @@ static void t_arc_lengths(int type)
         val = type == SLVS_C_ARC_LINE_LEN_RATIO ? 1.25 : 3;
         name = type == SLVS_C_ARC_LINE_LEN_RATIO ? "arc_line_len_ratio" : "arc_line_difference";
     }
-    con(type, val, 0, 0, a1, other);
+    if (type == SLVS_C_ARC_LINE_LEN_RATIO || type == SLVS_C_ARC_LINE_DIFFERENCE)
+        con(type, val, 0, 0, other, a1); /* the line first, as libslvs reads it */
+    else
+        con(type, val, 0, 0, a1, other);
     solve(name);
 }
 

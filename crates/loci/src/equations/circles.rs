@@ -41,6 +41,14 @@ fn arc_length<S: Scalar>(ent: &Ent, g: &Geo<S>) -> S {
     radius(ent, g) * sweep(ent, g)
 }
 
+/// A line's length projected into `w` (or in space).
+fn line_length_in<S: Scalar>(ent: &Ent, g: &Geo<S>, w: Option<&super::refs::Frame>) -> S {
+    let Ent::Line(l) = ent else {
+        unreachable!("validated: a line")
+    };
+    g.line_dir(l, w).norm()
+}
+
 fn line_length<S: Scalar>(ent: &Ent, g: &Geo<S>) -> S {
     let Ent::Line(l) = ent else {
         unreachable!("validated: a line")
@@ -89,11 +97,11 @@ pub(super) enum ArcRel {
     LineEqual,
     /// arc a = val * arc b
     ArcArcRatio,
-    /// arc a = val * line b
+    /// arc b = val * line a (SolveSpace's order: the line first, measured in the workplane)
     ArcLineRatio,
     /// arc a - arc b = val
     ArcArcDiff,
-    /// arc a - line b = val
+    /// arc b - line a = val (the line first, measured in the workplane)
     ArcLineDiff,
 }
 
@@ -107,9 +115,9 @@ pub(super) fn arc_length_relation<S: Scalar>(
     out.push(match rel {
         ArcRel::LineEqual => line_length(a, g) - arc_length(b, g),
         ArcRel::ArcArcRatio => arc_length(a, g) - arc_length(b, g) * e.val,
-        ArcRel::ArcLineRatio => arc_length(a, g) - line_length(b, g) * e.val,
+        ArcRel::ArcLineRatio => arc_length(b, g) - line_length_in(a, g, e.wp()) * e.val,
         ArcRel::ArcArcDiff => arc_length(a, g) - arc_length(b, g) - e.val,
-        ArcRel::ArcLineDiff => arc_length(a, g) - line_length(b, g) - e.val,
+        ArcRel::ArcLineDiff => arc_length(b, g) - line_length_in(a, g, e.wp()) - e.val,
     });
 }
 

@@ -50,7 +50,19 @@ pub(crate) fn compile_group(
         }
         compile_constraint(&r, c, values, &mut x, &mut out)?;
     }
-    for e in sys.entities() {
+    compile_entities(&r, group, values, &mut x, &mut out)?;
+    Ok(out)
+}
+
+/// The implicit equations of the entities of `group` (unit quaternions, equal arc radii).
+fn compile_entities(
+    r: &Resolver<'_>,
+    group: GroupId,
+    values: &[f64],
+    x: &mut Vec<f64>,
+    out: &mut Vec<Compiled>,
+) -> Result<(), ModelError> {
+    for e in r.sys.entities() {
         if e.group != group {
             continue;
         }
@@ -94,7 +106,7 @@ pub(crate) fn compile_group(
         if !l
             .params
             .iter()
-            .any(|&p| sys.params()[p as usize].group == group)
+            .any(|&p| r.sys.params()[p as usize].group == group)
         {
             continue;
         }
@@ -109,9 +121,41 @@ pub(crate) fn compile_group(
             choice: 0,
             target: [0.0; 3],
         };
-        out.push(kernel(Owner::Entity(e.h), l, eq, values, &mut x));
+        out.push(kernel(Owner::Entity(e.h), l, eq, values, x));
     }
-    Ok(out)
+    Ok(())
+}
+
+/// Compiles `group` with every equation as general residuals, parameter equalities included,
+/// so that each row belongs to one constraint (or entity) that can be named: the diagnosis
+/// works on these. With `references`, only the reference (driven) constraints are compiled
+/// instead, to measure them; entities then add nothing.
+pub(crate) fn compile_unmerged(
+    sys: &System,
+    group: GroupId,
+    values: &[f64],
+    references: bool,
+) -> Result<Vec<Kernel>, ModelError> {
+    let r = Resolver::new(sys);
+    let mut out = Vec::new();
+    let mut x = Vec::new();
+    for c in sys.constraints() {
+        if c.group != group || c.reference != references {
+            continue;
+        }
+        let (eq, l) = resolve_constraint(&r, c)?;
+        out.push(kernel(Owner::Constraint(c.h), l, eq, values, &mut x));
+    }
+    if !references {
+        compile_entities(&r, group, values, &mut x, &mut out)?;
+    }
+    Ok(out
+        .into_iter()
+        .filter_map(|c| match c {
+            Compiled::Kernel(k) => Some(k),
+            _ => None,
+        })
+        .collect())
 }
 
 fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec<f64>) -> Compiled {
@@ -159,8 +203,15 @@ pub(crate) fn resolve_constraint(
             kind: c.kind,
         });
     }
+    // Fields the type does not use are ignored, as validation ignores them (and libslvs
+    // never reads them): a stray handle there must not fail the solve.
+    let wants = c.wants();
+    let used = |i: usize| wants[i].is_some();
     let mut pts = [None, None];
-    for (slot, h) in pts.iter_mut().zip([c.pt_a, c.pt_b]) {
+    for (i, (slot, h)) in pts.iter_mut().zip([c.pt_a, c.pt_b]).enumerate() {
+        if !used(i) {
+            continue;
+        }
         if let Some(h) = h {
             match r.entity(owner, h, &mut l)? {
                 Ent::Point(p) => *slot = Some(p),
@@ -175,11 +226,13 @@ pub(crate) fn resolve_constraint(
         }
     }
     let mut ents = Vec::new();
-    for h in [c.entity_a, c.entity_b, c.entity_c, c.entity_d]
+    for (i, h) in [c.entity_a, c.entity_b, c.entity_c, c.entity_d]
         .into_iter()
-        .flatten()
+        .enumerate()
     {
-        ents.push(r.entity(owner, h, &mut l)?);
+        if let (Some(h), true) = (h, used(i + 2)) {
+            ents.push(r.entity(owner, h, &mut l)?);
+        }
     }
     let eq = Equation {
         kind: EqKind::Constraint(c.kind),

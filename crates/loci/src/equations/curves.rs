@@ -16,10 +16,18 @@ fn tangent<S: Scalar>(ent: &Ent, g: &Geo<S>, at_end: bool, w: Option<&Frame>) ->
                 g.at(&p[1], w).minus(g.at(&p[0], w))
             }
         }
-        Ent::Arc { .. } => {
+        Ent::Arc { wp: own, .. } => {
             // Perpendicular to the radius, in the arc's plane. Only the direction's line matters.
             let r = arc_radius_vector(ent, g, at_end);
-            Vec3::uv(-r.y, r.x)
+            let t = Vec3::uv(-r.y, r.x);
+            match w {
+                Some(f) if f.id == own.id => t,
+                // An arc of another workplane: its tangent in space, projected like the rest.
+                _ => {
+                    let q = g.quat(own.q);
+                    g.project_dir(q.u().scale(t.x).plus(q.v().scale(t.y)), w)
+                }
+            }
         }
         _ => unreachable!("validated: an arc or a cubic"),
     }

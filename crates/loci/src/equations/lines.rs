@@ -8,7 +8,9 @@ use crate::geom::{Scalar, Vec3};
 /// Distance from `p` to the line through `l`: signed in a workplane, unsigned in space.
 ///
 /// The sign is SolveSpace's: positive to the right of start→end (below a rightward line),
-/// as its `PointLineDistance` computes it; files store `val` with that sign.
+/// as its `PointLineDistance` computes it; files store `val` with that sign (its fixture
+/// `constraint/pt_line_distance/normal.slvs` holds the point (-10, 10) above the line
+/// (-15, 5)→(-5, 5) at a distance of -5).
 fn pt_line<S: Scalar>(g: &Geo<S>, p: &PointRef, l: &[PointRef; 2], w: Option<&Frame>) -> S {
     let a = g.at(&l[0], w);
     let d = g.at(&l[1], w).minus(a);
@@ -88,12 +90,9 @@ pub(super) fn eq_pt_ln_distances<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut 
     out.push(pt_line_abs(g, e.pt(0), e.line(0), w) - pt_line_abs(g, e.pt(1), e.line(1), w));
 }
 
-/// (cos, sin) of the angle from `a` to `b` (sin signed in a workplane, else non-negative).
-fn cos_sin<S: Scalar>(a: Vec3<S>, b: Vec3<S>, planar: bool) -> (S, S) {
-    let inv = S::cst(1.0) / (a.norm() * b.norm());
-    let c = a.cross(b);
-    let s = if planar { c.z } else { c.norm() };
-    (a.dot(b) * inv, s * inv)
+/// The cosine of the angle between `a` and `b`.
+fn cosine<S: Scalar>(a: Vec3<S>, b: Vec3<S>) -> S {
+    a.dot(b) / (a.norm() * b.norm())
 }
 
 /// The direction of entity `i`: a line's start minus end, or a normal's N axis (SolveSpace
@@ -131,18 +130,24 @@ pub(super) fn choose_angle(e: &Equation, g: &Geo<f64>) -> u8 {
 
 /// The angle between lines `entity_a` and `entity_b` is `val` degrees.
 ///
-/// In space this is SolveSpace's `cos(angle) = cos(val)`. In a workplane the angle keeps the
-/// sign it starts with and the residual is `sin(angle - val)`, which has the same solutions
-/// near the start but stays well conditioned at 0 and 180 degrees, where `cos` is flat.
+/// In space this is SolveSpace's `cos(angle) = cos(val)`. In a workplane the angle from A to B
+/// keeps the sign it starts with, and the residual is `angle - val` wrapped to (-180, 180]
+/// degrees (in radians), computed with `atan2` from the sine and cosine of the difference.
+/// Unlike `cos(angle) - cos(val)` it stays well conditioned at 0 and 180 degrees; unlike
+/// `sin(angle - val)` it vanishes only at the target, not also at the target plus 180 degrees
+/// (the supplement's mirror image, which Newton could otherwise reach from a distant start);
+/// and being linear in the angle, Newton reaches the target from anywhere on its side.
 pub(super) fn angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let (a, b) = dirs(e, g, 0, 1);
     let t = target(e);
     match e.wp {
-        None => out.push(cos_sin(a, b, false).0 - t.cos()),
+        None => out.push(cosine(a, b) - t.cos()),
         Some(_) => {
             let t = if e.choice == 1 { -t } else { t };
-            let (c, s) = cos_sin(a, b, true);
-            out.push(s * t.cos() - c * t.sin());
+            // |a||b| sin(angle) and |a||b| cos(angle): atan2 does not need them normalised.
+            let (c, s) = (a.dot(b), a.cross(b).z);
+            let (st, ct) = (t.sin(), t.cos());
+            out.push((s * ct - c * st).atan2(c * ct + s * st));
         }
     }
 }
@@ -166,22 +171,29 @@ pub(super) fn choose_equal_angle(e: &Equation, g: &Geo<f64>) -> u8 {
 
 /// angle(A, B) = angle(C, D), or supplementary with `other`.
 ///
-/// In space: `cos1 = cos2` (or `cos1 = -cos2`). In a workplane, with signed angles a1, a2 and a
-/// sign s fixed from the start: `sin(a1 - s a2) = 0` (or `sin(a1 + s a2) = 0` for supplementary).
+/// In space: `cos1 = cos2` (or `cos1 = -cos2`), as SolveSpace writes it. In a workplane, with
+/// signed angles a1 (A to B) and a2 (C to D), equal unsigned angles mean `a1 = s a2` and
+/// supplementary ones `a1 = s a2 + 180` degrees, for a sign s fixed from the start (whichever
+/// fits best). The residual is `a1 - s a2` (minus 180 with `other`), wrapped to (-180, 180]
+/// and computed with `atan2`: well conditioned at 0 and 180 degrees, and zero only for the
+/// requested relation (`sin(a1 - s a2)` would also vanish for the other one).
 pub(super) fn equal_angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let (a, b) = dirs(e, g, 0, 1);
     let (c, d) = dirs(e, g, 2, 3);
     match e.wp {
         None => {
-            let (c1, c2) = (cos_sin(a, b, false).0, cos_sin(c, d, false).0);
+            let (c1, c2) = (cosine(a, b), cosine(c, d));
             out.push(if e.other { c1 + c2 } else { c1 - c2 });
         }
         Some(_) => {
-            let (c1, s1) = cos_sin(a, b, true);
-            let (c2, s2) = cos_sin(c, d, true);
-            let s2 = if (e.choice == 1) != e.other { -s2 } else { s2 };
-            // sin(a1 - a2') with a2' = +-a2
-            out.push(s1 * c2 - c1 * s2);
+            // Sines and cosines scaled by the (positive) lengths: atan2 ignores the scale.
+            let (c1, s1) = (a.dot(b), a.cross(b).z);
+            let (c2, s2) = (c.dot(d), c.cross(d).z);
+            let s2 = if e.choice == 1 { -s2 } else { s2 };
+            // sin and cos of a1 - s a2, turned by 180 degrees for supplementary angles.
+            let (sd, cd) = (s1 * c2 - c1 * s2, c1 * c2 + s1 * s2);
+            let (sd, cd) = if e.other { (-sd, -cd) } else { (sd, cd) };
+            out.push(sd.atan2(cd));
         }
     }
 }
@@ -203,5 +215,5 @@ pub(super) fn parallel<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
 /// Lines `entity_a` and `entity_b` are perpendicular.
 pub(super) fn perpendicular<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let (a, b) = dirs(e, g, 0, 1);
-    out.push(cos_sin(a, b, e.wp.is_some()).0);
+    out.push(cosine(a, b));
 }

@@ -107,22 +107,35 @@ pub(super) fn choose_symmetric(e: &Equation, g: &Geo<f64>) -> u8 {
 }
 
 /// `pt_a` and `pt_b` mirror each other in plane `entity_a`: the midpoint is on the plane and
-/// the segment between them is along the normal (projected into the workplane if there is one).
+/// the segment between them is along the normal.
+///
+/// In a workplane the constraint applies to the points' projections into it, as SolveSpace
+/// does: the midpoint of the projections (placed back in space, on the workplane) is on the
+/// plane, and the projected segment is along the normal projected into the workplane. Points
+/// of the workplane are their own projections; other points (in space, or of another
+/// workplane) may sit at any height over it.
 pub(super) fn symmetric<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let f = e.frame(0);
     let n = g.plane_normal(f);
-    let (a, b) = (g.pos(e.pt(0)), g.pos(e.pt(1)));
-    let mid = a.plus(b).scale_f(0.5);
-    out.push(mid.minus(g.v3(f.origin)).dot(n));
     match e.wp() {
         None => {
-            let ab = b.minus(a);
-            push_two(ab.cross(n).scale(S::cst(1.0) / n.norm()), e.choice, out);
+            let (a, b) = (g.pos(e.pt(0)), g.pos(e.pt(1)));
+            let mid = a.plus(b).scale_f(0.5);
+            out.push(mid.minus(g.v3(f.origin)).dot(n));
+            push_two(
+                b.minus(a).cross(n).scale(S::cst(1.0) / n.norm()),
+                e.choice,
+                out,
+            );
         }
         Some(w) => {
-            let ab = g.at(e.pt(1), Some(w)).minus(g.at(e.pt(0), Some(w)));
+            let (a, b) = (g.at(e.pt(0), Some(w)), g.at(e.pt(1), Some(w)));
+            let m = a.plus(b).scale_f(0.5);
+            let q = g.quat(w.q);
+            let mid = g.v3(w.origin).plus(q.u().scale(m.x)).plus(q.v().scale(m.y));
+            out.push(mid.minus(g.v3(f.origin)).dot(n));
             let n2 = g.project_dir(n, Some(w));
-            out.push(ab.cross(n2).z / n2.norm());
+            out.push(b.minus(a).cross(n2).z / n2.norm());
         }
     }
 }

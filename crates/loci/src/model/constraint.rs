@@ -106,7 +106,8 @@ kinds! {
     PtPtDistance = "pt_pt_distance", 100001;
     /// Signed distance from `pt_a` to workplane `entity_a` is `val`.
     PtPlaneDistance = "pt_plane_distance", 100002;
-    /// Distance from `pt_a` to line `entity_a` is `val` (signed when projected).
+    /// Distance from `pt_a` to line `entity_a` is `val`: unsigned in 3D; when projected,
+    /// signed, positive to the right of the line's start→end (below a rightward line).
     PtLineDistance = "pt_line_distance", 100003;
     /// Signed distance from `pt_a` to the plane of face `entity_a` is `val`.
     PtFaceDistance = "pt_face_distance", 100004;
@@ -173,11 +174,12 @@ kinds! {
     LengthDifference = "length_difference", 100033;
     /// Length of arc `entity_a` divided by length of arc `entity_b` is `val`.
     ArcArcLenRatio = "arc_arc_len_ratio", 100034;
-    /// Length of arc `entity_a` divided by length of line `entity_b` is `val`.
+    /// Length of arc `entity_b` divided by length of line `entity_a` is `val` (SolveSpace's order:
+    /// the line first).
     ArcLineLenRatio = "arc_line_len_ratio", 100035;
     /// Length of arc `entity_a` minus length of arc `entity_b` is `val`.
     ArcArcDifference = "arc_arc_difference", 100036;
-    /// Length of arc `entity_a` minus length of line `entity_b` is `val`.
+    /// Length of arc `entity_b` minus length of line `entity_a` is `val` (the line first).
     ArcLineDifference = "arc_line_difference", 100037;
 }
 
@@ -315,7 +317,7 @@ impl ConstraintKind {
             K::ArcArcLenRatio | K::ArcArcDifference => {
                 ([N, N, Some(Arc), Some(Arc), N, N], Ignored)
             }
-            K::ArcLineLenRatio | K::ArcLineDifference => ([N, N, Some(Arc), l, N, N], Ignored),
+            K::ArcLineLenRatio | K::ArcLineDifference => ([N, N, l, Some(Arc), N, N], Either),
         };
         Signature { fields, plane }
     }
@@ -410,6 +412,31 @@ impl Constraint {
     pub fn as_reference(mut self) -> Self {
         self.reference = true;
         self
+    }
+
+    /// What each of the six reference fields must be for this constraint, in [`FIELD_NAMES`]
+    /// order, or `None` where the field is unused. This is [`ConstraintKind::signature`]
+    /// adjusted for the alternative forms: `horizontal`/`vertical` on two points when
+    /// `entity_a` is empty, and `at_midpoint` holding a line's midpoint on a plane
+    /// (`entity_b`) when `pt_a` is empty. Validation checks exactly these fields and the
+    /// solver reads only these.
+    #[must_use]
+    pub fn wants(&self) -> [Option<Want>; 6] {
+        use ConstraintKind as K;
+        if matches!(self.kind, K::Horizontal | K::Vertical) && self.entity_a.is_none() {
+            return [Some(Want::Point), Some(Want::Point), None, None, None, None];
+        }
+        if self.kind == K::AtMidpoint && self.pt_a.is_none() && self.entity_b.is_some() {
+            return [
+                None,
+                None,
+                Some(Want::Line),
+                Some(Want::Workplane),
+                None,
+                None,
+            ];
+        }
+        self.kind.signature().fields
     }
 
     /// The six reference fields, in [`FIELD_NAMES`] order.

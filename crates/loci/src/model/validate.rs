@@ -1,18 +1,29 @@
 //! Whole-model checks: every reference exists and has the right type.
 
 use super::{
-    Constraint, EntityId, EntityKind, EntityType, ObjectId, PlaneRule, System, Want, FIELD_NAMES,
+    Constraint, EntityId, EntityKind, EntityType, ObjectId, PlaneRule, System, FIELD_NAMES,
 };
 use crate::error::ModelError;
 
 impl System {
-    /// Checks every reference in the model: parameters and entities exist, each has the type
-    /// its field needs, 2D entities name a workplane, and constraints have the fields their
-    /// type uses.
+    /// Checks every value and reference in the model: parameter and constraint values are
+    /// finite, parameters and entities exist, each has the type its field needs, 2D entities
+    /// name a workplane, and constraints have the fields their type uses.
     ///
     /// # Errors
     /// The first problem found, naming the object and field.
     pub fn validate(&self) -> Result<(), ModelError> {
+        // `add_param` rejects non-finite values, but `set_value` and `params_mut` can still
+        // store one, and a NaN would silently poison every equation that reads it.
+        for p in self.params() {
+            if !p.val.is_finite() {
+                return Err(ModelError::NonFinite {
+                    owner: ObjectId::Param(p.h),
+                    field: "val",
+                    value: p.val,
+                });
+            }
+        }
         for e in self.entities() {
             self.validate_entity(e.h)?;
         }
@@ -202,29 +213,8 @@ impl System {
             _ => {}
         }
         let fields = c.fields();
-        let point_form = matches!(
-            c.kind,
-            super::ConstraintKind::Horizontal | super::ConstraintKind::Vertical
-        ) && c.entity_a.is_none();
-        // The midpoint of a line may be held on a plane instead of at a point.
-        let plane_form =
-            c.kind == super::ConstraintKind::AtMidpoint && c.pt_a.is_none() && c.entity_b.is_some();
-        for (i, want) in sig.fields.iter().enumerate() {
-            let want = if point_form {
-                match i {
-                    0 | 1 => Some(Want::Point),
-                    _ => None,
-                }
-            } else if plane_form {
-                match i {
-                    2 => Some(Want::Line),
-                    3 => Some(Want::Workplane),
-                    _ => None,
-                }
-            } else {
-                *want
-            };
-            let Some(want) = want else { continue };
+        for (i, want) in c.wants().iter().enumerate() {
+            let Some(want) = *want else { continue };
             let field = FIELD_NAMES[i];
             let Some(h) = fields[i] else {
                 let expected = if matches!(

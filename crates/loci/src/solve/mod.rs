@@ -12,8 +12,8 @@
 
 mod config;
 mod dense;
-mod gram;
-mod newton;
+pub(crate) mod gram;
+pub(crate) mod newton;
 mod report;
 mod substitute;
 
@@ -45,6 +45,19 @@ pub fn solve(
     cfg.check()?;
     sys.validate()?;
     solve_cached(sys, group, dragged, cfg, &mut Cache::default())
+}
+
+/// Solves `group` without touching `sys`: the report, and the value of every parameter where
+/// the solve stopped (in [`System::params`] order), whether or not it succeeded.
+pub(crate) fn solve_core(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+) -> Result<(Report, Vec<f64>), SolveError> {
+    cfg.check()?;
+    sys.validate()?;
+    solve_values(sys, group, dragged, cfg, &mut Cache::default())
 }
 
 /// What a [`Solver`] keeps between solves of a system whose structure has not changed: the
@@ -118,6 +131,37 @@ fn solve_cached(
     cfg: &Config,
     cache: &mut Cache,
 ) -> Result<Report, SolveError> {
+    let (mut report, values) = solve_values(sys, group, dragged, cfg, cache)?;
+    if report.outcome == Outcome::Inconsistent && cfg.find_failed {
+        // Name the minimal sets that cannot hold together, found on the unmerged equations
+        // where the solve stopped; only failures pay for it.
+        crate::diagnose::name_conflicts(sys, group, &values, cfg, &mut report);
+    }
+    // Values are written back only when every constraint holds, as libslvs does: a failed
+    // solve leaves the caller's parameters as they were.
+    if report.outcome.is_ok() {
+        let handles: Vec<(ParamId, bool)> = sys
+            .params()
+            .iter()
+            .map(|p| (p.h, p.group == group))
+            .collect();
+        for (p, (h, unknown)) in handles.into_iter().enumerate() {
+            if unknown {
+                sys.set_value(h, values[p]);
+            }
+        }
+    }
+    Ok(report)
+}
+
+/// The solve itself: the report and the value of every parameter where it stopped.
+fn solve_values(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    cache: &mut Cache,
+) -> Result<(Report, Vec<f64>), SolveError> {
     let params = sys.params();
     let np = params.len();
     let mut values: Vec<f64> = params.iter().map(|p| p.val).collect();
@@ -341,10 +385,11 @@ fn solve_cached(
             let (b, _) = comp.row_block[row];
             kernels[comp.blocks[b as usize].kernel].owner
         };
+        // Kept even when the component failed: the diagnosis starts where Newton stopped.
+        for (i, &c) in cols.iter().enumerate() {
+            x_all[c] = x[i];
+        }
         if fin.converged {
-            for (i, &c) in cols.iter().enumerate() {
-                x_all[c] = x[i];
-            }
             for dep in &fin.dependencies {
                 redundant.extend(dep.iter().map(|&r| owner_of(r)));
             }
@@ -408,22 +453,16 @@ fn solve_cached(
         report.failed_entities.sort_unstable();
         report.failed_entities.dedup();
     }
-    // Values are written back only when every constraint holds, as libslvs does: a failed
-    // solve leaves the caller's parameters as they were.
-    if report.outcome.is_ok() {
-        let handles: Vec<ParamId> = sys.params().iter().map(|p| p.h).collect();
-        for p in 0..np {
-            if !unknown[p] {
-                continue;
-            }
-            let val = match col_of_param(p, &col_of_root) {
+    let mut out = values;
+    for p in 0..np {
+        if unknown[p] {
+            out[p] = match col_of_param(p, &col_of_root) {
                 Some(c) => x_all[c as usize],
                 None => start[p],
             };
-            sys.set_value(handles[p], val);
         }
     }
-    Ok(report)
+    Ok((report, out))
 }
 
 /// Brings cached equations up to date with the system's current values: constraint values,

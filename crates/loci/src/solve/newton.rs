@@ -271,6 +271,8 @@ impl Component {
         // Levenberg-Marquardt damping, once plain Newton steps stop reducing the residual.
         let mut damping: Option<f64> = None;
         let mut history: Vec<f64> = Vec::new();
+        // Iterations since the merit last reached a new low.
+        let (mut best, mut since_best) = (f64::INFINITY, 0usize);
         loop {
             self.jacobian(kernels, x, values, r, jv, xs, jl);
             // Normalise rows of J S so the pivots of G measure independence, not units.
@@ -332,7 +334,15 @@ impl Component {
                 .fold(0.0f64, |a, &b| a.max(b));
             let mut alpha = (2.0 * alpha_prev).min(1.0);
             let mut accepted = false;
-            if damping.is_none() {
+            if m0 < best {
+                (best, since_best) = (m0, 0);
+            } else {
+                since_best += 1;
+            }
+            // Non-monotone steps that find no new low for a whole window are wandering (an
+            // impossible triangle climbed from 323 to 690 and crawled there with steps of 1e-8
+            // for 40 iterations): switch to damped steps, which descend monotonically.
+            if damping.is_none() && since_best < NONMONOTONE {
                 // Newton step with backtracking.
                 step(gram, y, dx);
                 for _ in 0..30 {

@@ -1,0 +1,117 @@
+//! Dependent equations and the circuits behind them.
+//!
+//! The rank-revealing LDLᵀ of `G = Jn Jnᵀ` (the solver's [`Gram`]) drops each row that lies
+//! in the span of the rows eliminated before it; the kept rows are a basis. A dropped row `k`
+//! is a unique combination of basis rows, `Jn_k = Σ c_i Jn_i`, found by solving
+//! `G c = Jn Jn_kᵀ`; the row with the basis rows of nonzero `c_i` is its *fundamental
+//! circuit*: a dependent set from which removing any one row leaves independent rows.
+//!
+//! With `y = e_k - c`, `yᵀ Jn = 0`. The linearised equations `Jn dx = -rn` can hold on the
+//! circuit only if `yᵀ rn = 0`: when it is not, the circuit conflicts where the solve stopped;
+//! when it is (within tolerance), the circuit is redundant.
+
+use super::unmerged::{Equations, Linear};
+use crate::solve::gram::Gram;
+use crate::solve::Config;
+
+/// A minimal dependent set of rows.
+#[derive(Clone, Debug)]
+pub(crate) struct Circuit {
+    /// The rows, ascending.
+    pub rows: Vec<usize>,
+    /// Whether the rows cannot hold together to first order.
+    pub conflicting: bool,
+}
+
+/// The factorisation of the Jacobian's rows and which of them are dependent.
+pub(crate) struct Rank {
+    pub gram: Gram,
+    /// Rows dropped as dependent, ascending.
+    pub dropped: Vec<usize>,
+}
+
+impl Rank {
+    /// Factorises at `lin`. `None` when there are no rows or the factorisation fails.
+    pub fn new(eqs: &Equations, lin: &Linear, cfg: &Config) -> Option<Self> {
+        if eqs.rows == 0 {
+            return None;
+        }
+        let mut gram = Gram::new(eqs.rows, &eqs.columns)?;
+        gram.assemble(&lin.jn);
+        if !gram.factor(0.0, cfg.rank_tolerance) {
+            return None;
+        }
+        let dropped = gram.dropped();
+        Some(Self { gram, dropped })
+    }
+
+    /// The rank of the equations.
+    pub fn rank(&self, rows: usize) -> usize {
+        rows - self.dropped.len()
+    }
+}
+
+/// Coefficients below this (rows have unit length) are rounding, not dependence.
+const COEFF_EPS: f64 = 1e-6;
+
+/// The fundamental circuit of every dropped row, classified as conflicting or redundant.
+pub(crate) fn circuits(
+    eqs: &Equations,
+    lin: &Linear,
+    rank: &mut Rank,
+    cfg: &Config,
+) -> Vec<Circuit> {
+    let m = eqs.rows;
+    let mut b = vec![0.0; m];
+    let mut out = Vec::with_capacity(rank.dropped.len());
+    for &k in &rank.dropped {
+        if lin.inv[k] == 0.0 {
+            // An empty row (only constants, or no first-order effect): it stands alone and
+            // holds or not by its value.
+            out.push(Circuit {
+                rows: vec![k],
+                conflicting: !(lin.r[k].abs() <= cfg.tolerance),
+            });
+            continue;
+        }
+        // b = Jn Jn_kᵀ
+        b.iter_mut().for_each(|v| *v = 0.0);
+        for (c, ik) in eqs.row_entries(k) {
+            let vk = lin.jn[ik as usize];
+            for &(row, idx) in &eqs.columns[c as usize] {
+                b[row as usize] += lin.jn[idx as usize] * vk;
+            }
+        }
+        rank.gram.solve(&mut b);
+        let mut rows = vec![k];
+        // y = e_k - c: the certificate of dependence, and the test of consistency.
+        let (mut s, mut bound) = (lin.rn(k), cfg.tolerance * lin.inv[k]);
+        for (i, &c) in b.iter().enumerate() {
+            if i != k && c.abs() > COEFF_EPS {
+                rows.push(i);
+                s -= c * lin.rn(i);
+                bound += c.abs() * cfg.tolerance * lin.inv[i];
+            }
+        }
+        rows.sort_unstable();
+        out.push(Circuit {
+            rows,
+            conflicting: !(s.abs() <= bound),
+        });
+    }
+    out
+}
+
+/// Whether the point is stationary for the least-squares problem, `Jnᵀ rn ≈ 0`, with residuals
+/// left: then `rn` itself is a dependence among the rows it touches, and those rows conflict.
+pub(crate) fn stationary_with_residual(eqs: &Equations, lin: &Linear, cfg: &Config) -> bool {
+    let rn: Vec<f64> = (0..eqs.rows).map(|i| lin.rn(i)).collect();
+    let norm_r = rn.iter().map(|v| v * v).sum::<f64>().sqrt();
+    if !(lin.r.iter().any(|v| !(v.abs() <= cfg.tolerance)) && norm_r.is_finite()) {
+        return false;
+    }
+    let mut g = vec![0.0; eqs.columns.len()];
+    eqs.mul_t(lin, &rn, &mut g);
+    let norm_g = g.iter().map(|v| v * v).sum::<f64>().sqrt();
+    norm_g <= 1e-5 * norm_r
+}

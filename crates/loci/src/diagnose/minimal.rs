@@ -1,0 +1,110 @@
+//! Checking a candidate conflict on its own: Newton on just its equations, from where the
+//! solve stopped, and a deletion filter that removes every member the conflict does not need.
+
+use super::report::Member;
+use super::unmerged::{Equations, CONSTANT};
+use crate::equations::Rows;
+use crate::solve::newton::{Component, Scratch};
+use crate::solve::Config;
+use std::collections::HashMap;
+
+/// Whether the equations of `kernels` can all hold: Newton on them alone, starting at
+/// `values`, converges.
+pub(crate) fn consistent(eqs: &Equations, kernels: &[usize], values: &[f64], cfg: &Config) -> bool {
+    let mut local: HashMap<u32, u32> = HashMap::new();
+    let mut globals = Vec::new();
+    for &k in kernels {
+        for &c in &eqs.blocks[k].cols {
+            local.entry(c).or_insert_with(|| {
+                globals.push(c);
+                (globals.len() - 1) as u32
+            });
+        }
+    }
+    if globals.is_empty() {
+        // Constants only: they hold or not as they are.
+        let mut xs = Vec::new();
+        return kernels.iter().all(|&k| {
+            let kern = &eqs.kernels[k];
+            kern.gather(values, &mut xs);
+            let mut out = Rows::new();
+            kern.eq.eval(&xs, &mut out);
+            out.v[..out.n].iter().all(|v| v.abs() <= cfg.tolerance)
+        });
+    }
+    let map = |p: usize| {
+        let c = eqs.col_of_param[p];
+        if c == CONSTANT {
+            None
+        } else {
+            local.get(&c).copied()
+        }
+    };
+    let n = globals.len();
+    let mut comp = Component::new(&eqs.kernels, kernels, &map, n, vec![1.0; n]);
+    let x0: Vec<f64> = globals
+        .iter()
+        .map(|&c| values[eqs.param_of_col[c as usize]])
+        .collect();
+    // From where the solve stopped, then from a generic point nearby: a stop at degenerate
+    // geometry (a line collapsed to a point) says nothing about whether the set can hold.
+    let mut scratch = Scratch::default();
+    for nudge in [0.0, 1e-3] {
+        let mut x: Vec<f64> = x0
+            .iter()
+            .enumerate()
+            .map(|(i, v)| {
+                v + nudge * (1.0 + v.abs()) * (((i as f64 + 1.0) * 0.618_034).fract() - 0.5)
+            })
+            .collect();
+        if comp
+            .solve(&eqs.kernels, &mut x, values, cfg, &mut scratch)
+            .converged
+        {
+            return true;
+        }
+    }
+    false
+}
+
+/// Shrinks `set` to a minimal conflict by the deletion filter: a member whose removal leaves
+/// the rest still failing is not needed. Implicit conditions of entities, which a user
+/// cannot remove, are tried first, then constraints from the oldest, so that the most recent
+/// constraints are the ones kept when there is a choice.
+///
+/// Returns the set and whether it was verified (it fails as a whole; when it does not, it
+/// is returned unchanged).
+pub(crate) fn minimise(
+    eqs: &Equations,
+    set: &[Member],
+    values: &[f64],
+    cfg: &Config,
+) -> (Vec<Member>, bool) {
+    let mut keep: Vec<(Member, usize)> = set
+        .iter()
+        .filter_map(|&m| eqs.kernel_of(m).map(|k| (m, k)))
+        .collect();
+    let all: Vec<usize> = keep.iter().map(|x| x.1).collect();
+    if keep.len() != set.len() || consistent(eqs, &all, values, cfg) {
+        let mut out = set.to_vec();
+        out.sort_by(Member::report_order);
+        return (out, false);
+    }
+    let mut trials: Vec<Member> = keep.iter().map(|x| x.0).collect();
+    trials.sort_by_key(|m| match *m {
+        Member::Entity(e) => (0, e.0),
+        Member::Constraint(c) => (1, c.0),
+    });
+    for m in trials {
+        if keep.len() <= 1 {
+            break;
+        }
+        let rest: Vec<usize> = keep.iter().filter(|x| x.0 != m).map(|x| x.1).collect();
+        if !consistent(eqs, &rest, values, cfg) {
+            keep.retain(|x| x.0 != m);
+        }
+    }
+    let mut out: Vec<Member> = keep.into_iter().map(|x| x.0).collect();
+    out.sort_by(Member::report_order);
+    (out, true)
+}

@@ -1,0 +1,274 @@
+//! Diagnosis: what is wrong with a group, and where.
+//!
+//! 1. **Counting.** A maximum matching of equations to unknowns finds blocks with more
+//!    equations than unknowns before any numerics ([`structure`]).
+//! 2. **Solving.** The group is solved as [`crate::solve`] would, without changing the system.
+//! 3. **Circuits.** Where the solve stopped, the equations — unmerged, so that equalities
+//!    such as `horizontal` or `points_coincident` are rows that can be named — are factorised
+//!    with the solver's rank-revealing LDLᵀ. Each dependent row and the rows it is a
+//!    combination of form a minimal dependent set ([`circuits`]): redundant when its residuals
+//!    agree, conflicting when they do not. Conflicts are checked, and shrunk to minimal sets
+//!    of constraints, by solving them on their own ([`minimal`]); redundant circuits that
+//!    overlap are grouped ([`redundant`]).
+//! 4. **Freedom.** The null space of the Jacobian, sampled through the same factorisation,
+//!    says how each entity can still move ([`freedom`]).
+//! 5. **Measurements** of reference constraints ([`measure`]).
+
+mod circuits;
+mod eigen;
+mod freedom;
+mod measure;
+mod minimal;
+mod motion;
+mod redundant;
+mod report;
+mod structure;
+#[cfg(test)]
+mod tests;
+mod unmerged;
+
+pub use motion::Motion;
+pub use report::{
+    ConflictSet, Diagnosis, EntityFreedom, Measurement, Member, OverConstrained, RedundantSet,
+};
+
+use crate::error::SolveError;
+use crate::model::{GroupId, System};
+use crate::solve::{solve_core, Config, Outcome, Report};
+use circuits::{Circuit, Rank};
+use report::NullSketch;
+use std::collections::HashSet;
+use unmerged::{Equations, Linear};
+
+/// Diagnoses `group` of `sys`: counts, solves (without changing `sys`), and reports degrees of
+/// freedom entity by entity, redundant and conflicting constraints, and the values of
+/// reference constraints.
+///
+/// # Errors
+/// An invalid model or a bad option, as [`crate::solve`].
+pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis, SolveError> {
+    cfg.check()?;
+    sys.validate()?;
+    let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
+    let eqs = Equations::new(sys, group, &start)?;
+
+    // 1. Counting, on the pattern of the Jacobian at a generic point near the start (where no
+    // derivative vanishes by accident, as the vertical one of a horizontal distance does).
+    let structural = {
+        let generic = eqs.linearise(&perturbed(&eqs, &start));
+        structure::over_constrained(&eqs, &structure::pattern(&eqs, &generic))
+    };
+
+    // 2. Solve; the lists are ours to make.
+    let (report, values) = solve_core(sys, group, &[], &cfg.clone().with_find_failed(false))?;
+
+    // 3. Circuits where it stopped.
+    let lin = eqs.linearise(&values);
+    let mut rank = Rank::new(&eqs, &lin, cfg);
+    let circuits = match rank.as_mut() {
+        Some(r) => circuits::circuits(&eqs, &lin, r, cfg),
+        None => Vec::new(),
+    };
+    let mut conflicting = conflict_sets(&eqs, &lin, &circuits, &values, report.outcome, cfg);
+    let mut redundant = redundant::redundant_sets(&eqs, &lin, &circuits, cfg.rank_tolerance);
+    let mut outcome = report.outcome;
+    if outcome == Outcome::DidNotConverge && !conflicting.is_empty() {
+        outcome = Outcome::Inconsistent;
+    }
+    if outcome == Outcome::Okay && !redundant.is_empty() {
+        outcome = Outcome::RedundantOkay;
+    }
+    // The numbers here and the solver's can disagree at the edge of the rank tolerance; the
+    // solver's own lists then stand in, so that a verdict never comes without names.
+    if (outcome == Outcome::Inconsistent && conflicting.is_empty())
+        || (outcome == Outcome::RedundantOkay && redundant.is_empty())
+    {
+        let (r, _) = solve_core(sys, group, &[], &cfg.clone().with_find_failed(true))?;
+        let members = solver_members(&r);
+        if !members.is_empty() {
+            if outcome == Outcome::Inconsistent {
+                conflicting.push(ConflictSet {
+                    members,
+                    verified: false,
+                });
+            } else {
+                redundant.push(RedundantSet {
+                    members,
+                    excess: 1,
+                    involved: Vec::new(),
+                });
+            }
+        }
+    }
+    let unsatisfied = if outcome == Outcome::DidNotConverge {
+        let mut u: Vec<Member> = (0..eqs.rows)
+            .filter(|&i| !(lin.r[i].abs() <= cfg.tolerance))
+            .map(|i| eqs.member(eqs.row_kernel[i] as usize))
+            .collect();
+        u.sort_by(Member::report_order);
+        u.dedup();
+        u
+    } else {
+        Vec::new()
+    };
+
+    // 4. Freedom.
+    let unknowns = eqs.columns.len();
+    let rank_n = rank.as_ref().map_or(0, |r| r.rank(eqs.rows));
+    let dof = unknowns.saturating_sub(rank_n);
+    let vectors = freedom::sketch(&eqs, &lin, rank.as_mut(), dof);
+    let freedoms = freedom::freedoms(sys, group, &eqs, &values, &vectors);
+    let params = sys.params();
+    let sketch = NullSketch {
+        params: eqs.param_of_col.iter().map(|&p| params[p].h).collect(),
+        vectors,
+    };
+
+    // 5. Measurements, at the solution when there is one.
+    let at = if outcome.is_ok() { &values } else { &start };
+    let measurements = measure::measurements(sys, group, &start, at)?;
+
+    Ok(Diagnosis {
+        group,
+        outcome,
+        dof,
+        unknowns,
+        equations: eqs.rows,
+        rank: rank_n,
+        iterations: report.iterations,
+        residual: report.residual,
+        structural,
+        conflicting,
+        redundant,
+        unsatisfied,
+        freedoms,
+        measurements,
+        sketch,
+    })
+}
+
+impl System {
+    /// Diagnoses `group` with default settings. See [`diagnose`].
+    ///
+    /// # Errors
+    /// As [`diagnose`].
+    pub fn diagnose(&self, group: impl Into<GroupId>) -> Result<Diagnosis, SolveError> {
+        diagnose(self, group.into(), &Config::default())
+    }
+}
+
+/// Names the conflicts of a failed solve in `report`: the union of the minimal conflict sets
+/// found where it stopped (`values`), replacing the solver's own list when any is found.
+pub(crate) fn name_conflicts(
+    sys: &System,
+    group: GroupId,
+    values: &[f64],
+    cfg: &Config,
+    report: &mut Report,
+) {
+    let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
+    let Ok(eqs) = Equations::new(sys, group, &start) else {
+        return;
+    };
+    let lin = eqs.linearise(values);
+    let circuits = match Rank::new(&eqs, &lin, cfg) {
+        Some(mut r) => circuits::circuits(&eqs, &lin, &mut r, cfg),
+        None => return,
+    };
+    let sets = conflict_sets(&eqs, &lin, &circuits, values, report.outcome, cfg);
+    if sets.is_empty() {
+        return;
+    }
+    report.failed.clear();
+    report.failed_entities.clear();
+    for m in sets.iter().flat_map(|s| &s.members) {
+        match *m {
+            Member::Constraint(c) => report.failed.push(c),
+            Member::Entity(e) => report.failed_entities.push(e),
+        }
+    }
+    report.failed.sort_unstable();
+    report.failed.dedup();
+    report.failed_entities.sort_unstable();
+    report.failed_entities.dedup();
+}
+
+/// Minimal conflict sets from the conflicting circuits; for a solve that stopped at a
+/// least-squares minimum with no dependent row, from the rows with residuals left.
+fn conflict_sets(
+    eqs: &Equations,
+    lin: &Linear,
+    circuits: &[Circuit],
+    values: &[f64],
+    outcome: Outcome,
+    cfg: &Config,
+) -> Vec<ConflictSet> {
+    let members_of = |rows: &mut dyn Iterator<Item = usize>| {
+        let mut m: Vec<Member> = rows
+            .map(|r| eqs.member(eqs.row_kernel[r] as usize))
+            .collect();
+        m.sort_by(Member::report_order);
+        m.dedup();
+        m
+    };
+    let mut candidates: Vec<Vec<Member>> = Vec::new();
+    let mut seen = HashSet::new();
+    for c in circuits.iter().filter(|c| c.conflicting) {
+        let m = members_of(&mut c.rows.iter().copied());
+        if seen.insert(m.clone()) {
+            candidates.push(m);
+        }
+    }
+    if candidates.is_empty()
+        && !outcome.is_ok()
+        && circuits::stationary_with_residual(eqs, lin, cfg)
+    {
+        let m = members_of(&mut (0..eqs.rows).filter(|&i| !(lin.r[i].abs() <= cfg.tolerance)));
+        if !m.is_empty() {
+            candidates.push(m);
+        }
+    }
+    let mut out: Vec<ConflictSet> = Vec::new();
+    let mut done = HashSet::new();
+    for c in candidates {
+        let (members, verified) = minimal::minimise(eqs, &c, values, cfg);
+        // A set read off a least-squares minimum is only a conflict if it checks out.
+        if (verified || circuits.iter().any(|c| c.conflicting)) && done.insert(members.clone()) {
+            out.push(ConflictSet { members, verified });
+        }
+    }
+    out.sort_by(|a, b| {
+        a.members.len().cmp(&b.members.len()).then_with(|| {
+            a.members
+                .iter()
+                .zip(&b.members)
+                .map(|(x, y)| Member::report_order(x, y))
+                .find(|o| o.is_ne())
+                .unwrap_or(std::cmp::Ordering::Equal)
+        })
+    });
+    out
+}
+
+/// The solver's failed constraints and entities as members.
+fn solver_members(r: &Report) -> Vec<Member> {
+    let mut m: Vec<Member> = r
+        .failed
+        .iter()
+        .map(|&c| Member::Constraint(c))
+        .chain(r.failed_entities.iter().map(|&e| Member::Entity(e)))
+        .collect();
+    m.sort_by(Member::report_order);
+    m
+}
+
+/// The starting values with every unknown moved a little, deterministically: a point where no
+/// derivative vanishes by accident.
+fn perturbed(eqs: &Equations, start: &[f64]) -> Vec<f64> {
+    let mut v = start.to_vec();
+    for (c, &p) in eqs.param_of_col.iter().enumerate() {
+        let t = ((c as f64 + 1.0) * 0.618_033_988_749_895).fract() - 0.5;
+        v[p] += 1e-3 * (1.0 + v[p].abs()) * t;
+    }
+    v
+}

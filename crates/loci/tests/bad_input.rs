@@ -1,0 +1,770 @@
+//! Bad input is an `Err` naming the object at fault, never a panic.
+
+mod common;
+
+use common::{Sketch, WP};
+use loci::format::json::Problem;
+use loci::{
+    solve, Config, Constraint, ConstraintId, ConstraintKind as K, Entity, EntityId, EntityType,
+    ModelError, ObjectId, Param, ParamId, PlaneRule, SolveError, System,
+};
+use proptest::prelude::*;
+
+fn c_id(h: u32) -> ObjectId {
+    ObjectId::Constraint(ConstraintId(h))
+}
+
+fn e_id(h: u32) -> ObjectId {
+    ObjectId::Entity(EntityId(h))
+}
+
+/// Solving `sys` in group 2 must fail with `want`.
+fn solve_err(mut sys: System, want: ModelError) {
+    assert_eq!(sys.validate(), Err(want.clone()));
+    let before: Vec<u64> = sys.params().iter().map(|p| p.val.to_bits()).collect();
+    assert_eq!(sys.solve_group(2), Err(SolveError::Model(want)));
+    let after: Vec<u64> = sys.params().iter().map(|p| p.val.to_bits()).collect();
+    assert_eq!(before, after, "a rejected solve touches nothing");
+}
+
+/// Two points 301, 302 and the line 303 between them, in group 2.
+fn base() -> Sketch {
+    let mut s = Sketch::new();
+    s.point(301, 2, [0.0, 0.0]);
+    s.point(302, 2, [10.0, 1.0]);
+    s.line(303, 2, 301, 302);
+    s
+}
+
+#[test]
+fn zero_handles_are_rejected_on_add() {
+    let mut sys = System::new();
+    sys.add_param(Param::new(1, 1, 0.0)).unwrap();
+    assert_eq!(
+        sys.add_param(Param::new(0, 1, 0.0)),
+        Err(ModelError::ZeroHandle {
+            what: "param",
+            index: 1
+        })
+    );
+    assert_eq!(
+        sys.add_entity(Entity::distance(0, 1, None, 1)),
+        Err(ModelError::ZeroHandle {
+            what: "entity",
+            index: 0
+        })
+    );
+    assert_eq!(
+        sys.add_constraint(Constraint::new(0, 1, K::WhereDragged)),
+        Err(ModelError::ZeroHandle {
+            what: "constraint",
+            index: 0
+        })
+    );
+    assert_eq!(sys.params().len(), 1, "nothing was added");
+}
+
+#[test]
+fn duplicate_handles_are_rejected_on_add() {
+    let mut s = base();
+    assert_eq!(
+        s.sys.add_param(Param::new(1000, 2, 3.0)),
+        Err(ModelError::DuplicateHandle {
+            object: ObjectId::Param(ParamId(1000))
+        })
+    );
+    assert_eq!(
+        s.sys.add_entity(Entity::line(303, 2, None, 302, 301)),
+        Err(ModelError::DuplicateHandle { object: e_id(303) })
+    );
+    let c = s.on_points(2, K::PtPtDistance, 301, 302, 5.0);
+    assert_eq!(
+        s.sys
+            .add_constraint(Constraint::new(c, 2, K::Vertical).with_entities([303, 0, 0, 0])),
+        Err(ModelError::DuplicateHandle { object: c_id(c) })
+    );
+    assert_eq!(s.sys.constraints().len(), 1);
+    assert_eq!(s.sys.constraint(c.into()).unwrap().kind, K::PtPtDistance);
+    // The same checks guard whole-list construction.
+    let p = Param::new(5, 1, 0.0);
+    assert_eq!(
+        System::from_parts(vec![p, p], vec![], vec![]).unwrap_err(),
+        ModelError::DuplicateHandle {
+            object: ObjectId::Param(ParamId(5))
+        }
+    );
+}
+
+#[test]
+fn dangling_param_in_an_entity() {
+    let mut s = base();
+    s.sys
+        .add_entity(Entity::point_2d(304, 2, WP, [1000, 4242]))
+        .unwrap();
+    solve_err(
+        s.sys,
+        ModelError::Dangling {
+            owner: e_id(304),
+            field: "params[1]",
+            target: "param",
+            handle: 4242,
+        },
+    );
+}
+
+#[test]
+fn dangling_entity_in_an_entity_and_in_a_constraint() {
+    let mut s = base();
+    s.sys
+        .add_entity(Entity::line(304, 2, None, 301, 999))
+        .unwrap();
+    solve_err(
+        s.sys,
+        ModelError::Dangling {
+            owner: e_id(304),
+            field: "points[1]",
+            target: "entity",
+            handle: 999,
+        },
+    );
+
+    let mut s = base();
+    let c = s.on_points(2, K::PtPtDistance, 301, 777, 5.0);
+    solve_err(
+        s.sys,
+        ModelError::Dangling {
+            owner: c_id(c),
+            field: "pt_b",
+            target: "entity",
+            handle: 777,
+        },
+    );
+
+    let mut s = base();
+    let c = s.constrain(Constraint::new(0, 2, K::Horizontal).with_entities([303, 0, 0, 0]));
+    s.sys.constraint_mut(c.into()).unwrap().workplane = Some(EntityId(555));
+    solve_err(
+        s.sys,
+        ModelError::Dangling {
+            owner: c_id(c),
+            field: "workplane",
+            target: "entity",
+            handle: 555,
+        },
+    );
+}
+
+#[test]
+fn a_circle_where_a_line_is_needed() {
+    let mut s = base();
+    let r = s.param(2, 4.0);
+    s.sys.add_entity(Entity::normal_2d(310, 2, WP)).unwrap();
+    s.sys
+        .add_entity(Entity::distance(311, 2, Some(WP), r))
+        .unwrap();
+    s.sys
+        .add_entity(Entity::circle(312, 2, Some(WP), 301, 310, 311))
+        .unwrap();
+    let c = s.on_entities(2, K::EqualLengthLines, 303, 312, 0.0);
+    solve_err(
+        s.sys,
+        ModelError::WrongKind {
+            owner: c_id(c),
+            field: "entity_b",
+            entity: EntityId(312),
+            found: EntityType::Circle,
+            expected: "a line segment",
+        },
+    );
+}
+
+#[test]
+fn a_line_where_a_point_or_workplane_is_needed() {
+    let mut s = base();
+    s.sys
+        .add_entity(Entity::point_2d(304, 2, 303, [1000, 1001]))
+        .unwrap();
+    solve_err(
+        s.sys,
+        ModelError::WrongKind {
+            owner: e_id(304),
+            field: "workplane",
+            entity: EntityId(303),
+            found: EntityType::LineSegment,
+            expected: "a workplane",
+        },
+    );
+
+    let mut s = base();
+    let c = s.on_points(2, K::PtPtDistance, 301, 303, 5.0);
+    solve_err(
+        s.sys,
+        ModelError::WrongKind {
+            owner: c_id(c),
+            field: "pt_b",
+            entity: EntityId(303),
+            found: EntityType::LineSegment,
+            expected: "a point",
+        },
+    );
+
+    // A line whose end is a line.
+    let mut s = base();
+    s.sys
+        .add_entity(Entity::line(304, 2, None, 301, 303))
+        .unwrap();
+    solve_err(
+        s.sys,
+        ModelError::WrongKind {
+            owner: e_id(304),
+            field: "points[1]",
+            entity: EntityId(303),
+            found: EntityType::LineSegment,
+            expected: "a point",
+        },
+    );
+}
+
+#[test]
+fn a_workplane_built_from_the_wrong_parts() {
+    let mut s = base();
+    s.sys
+        .add_entity(Entity::workplane(320, 2, 301, 102))
+        .unwrap();
+    solve_err(
+        s.sys,
+        ModelError::WrongKind {
+            owner: e_id(320),
+            field: "origin",
+            entity: EntityId(301),
+            found: EntityType::PointIn2d,
+            expected: "a 3D point",
+        },
+    );
+}
+
+#[test]
+fn a_2d_point_without_a_workplane_and_a_point_in_its_own_plane() {
+    let mut s = base();
+    let mut e = Entity::point_2d(304, 2, WP, [1000, 1001]);
+    e.workplane = None;
+    s.sys.add_entity(e).unwrap();
+    solve_err(
+        s.sys,
+        ModelError::MissingField {
+            owner: e_id(304),
+            field: "workplane",
+            expected: "a workplane",
+        },
+    );
+    let mut s = base();
+    s.sys
+        .add_entity(Entity::point_2d(304, 2, 304, [1000, 1001]))
+        .unwrap();
+    solve_err(
+        s.sys,
+        ModelError::Cycle {
+            entity: EntityId(304),
+        },
+    );
+}
+
+#[test]
+fn a_constraint_missing_a_field_it_needs() {
+    let mut s = base();
+    let c = s.on_points(2, K::PtPtDistance, 301, 0, 5.0);
+    solve_err(
+        s.sys,
+        ModelError::MissingField {
+            owner: c_id(c),
+            field: "pt_b",
+            expected: "a point",
+        },
+    );
+}
+
+#[test]
+fn non_finite_values_are_rejected() {
+    let mut sys = System::new();
+    for v in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        let err = sys.add_param(Param::new(7, 1, v)).unwrap_err();
+        assert!(
+            matches!(err, ModelError::NonFinite { owner: ObjectId::Param(ParamId(7)), field: "val", value } if value.to_bits() == v.to_bits()),
+            "{err:?}"
+        );
+        let err = sys
+            .add_constraint(Constraint::new(3, 1, K::PtPtDistance).with_val(v))
+            .unwrap_err();
+        assert!(
+            matches!(err, ModelError::NonFinite { owner, field: "val", .. } if owner == c_id(3)),
+            "{err:?}"
+        );
+    }
+    assert!(sys.params().is_empty() && sys.constraints().is_empty());
+}
+
+#[test]
+fn non_finite_values_set_after_adding_are_caught_by_the_solve() {
+    // A constraint value changed in place.
+    let mut s = base();
+    let c = s.on_points(2, K::PtPtDistance, 301, 302, 5.0);
+    s.sys.constraint_mut(c.into()).unwrap().val = f64::INFINITY;
+    solve_err(
+        s.sys,
+        ModelError::NonFinite {
+            owner: c_id(c),
+            field: "val",
+            value: f64::INFINITY,
+        },
+    );
+
+    // A parameter value changed in place, in the solved group and as a constant.
+    for (h, group) in [(1001u32, 2u32), (4, 1)] {
+        let mut s = base();
+        s.on_points(2, K::PtPtDistance, 301, 302, 5.0);
+        assert!(s.sys.set_value(h.into(), f64::NAN));
+        let err = s.sys.solve_group(2).unwrap_err();
+        assert!(
+            matches!(&err, SolveError::Model(ModelError::NonFinite { owner: ObjectId::Param(p), field: "val", value }) if p.0 == h && value.is_nan()),
+            "param {h} (group {group}): {err:?}"
+        );
+    }
+}
+
+#[test]
+fn two_d_only_constraints_need_a_workplane() {
+    let mut s = base();
+    let r = s.param(2, 4.0);
+    s.sys.add_entity(Entity::normal_2d(310, 2, WP)).unwrap();
+    s.point(311, 2, [0.0, 4.0]);
+    s.point(312, 2, [4.0, 0.0]);
+    s.sys
+        .add_entity(Entity::arc(313, 2, WP, 310, 301, 312, 311))
+        .unwrap();
+    let _ = r;
+    let cases: Vec<Constraint> = vec![
+        Constraint::new(1, 2, K::Horizontal).with_entities([303, 0, 0, 0]),
+        Constraint::new(1, 2, K::Vertical).with_points(301, 302),
+        Constraint::new(1, 2, K::SymmetricHoriz).with_points(301, 302),
+        Constraint::new(1, 2, K::SymmetricVert).with_points(301, 302),
+        Constraint::new(1, 2, K::SymmetricLine)
+            .with_points(311, 312)
+            .with_entities([303, 0, 0, 0]),
+        Constraint::new(1, 2, K::ArcLineTangent).with_entities([313, 303, 0, 0]),
+        Constraint::new(1, 2, K::CurveCurveTangent).with_entities([313, 313, 0, 0]),
+    ];
+    let required: Vec<K> = K::ALL
+        .iter()
+        .copied()
+        .filter(|k| k.signature().plane == PlaneRule::Required)
+        .collect();
+    let mut covered: Vec<K> = cases.iter().map(|c| c.kind).collect();
+    covered.sort_unstable();
+    let mut required = required;
+    required.sort_unstable();
+    assert_eq!(covered, required, "every 2D-only type is tried");
+    for c in cases {
+        let kind = c.kind;
+        let mut sys = s.sys.clone();
+        sys.add_constraint(c).unwrap();
+        solve_err(
+            sys,
+            ModelError::NeedsWorkplane {
+                constraint: ConstraintId(1),
+                kind,
+            },
+        );
+    }
+}
+
+#[test]
+fn unknown_dragged_parameter() {
+    let mut s = base();
+    s.on_points(2, K::PtPtDistance, 301, 302, 5.0);
+    assert_eq!(
+        solve(
+            &mut s.sys,
+            2.into(),
+            &[ParamId(1000), ParamId(31337)],
+            &Config::default()
+        ),
+        Err(SolveError::UnknownDragged(31337))
+    );
+}
+
+#[test]
+fn bad_options() {
+    let mut s = base();
+    s.on_points(2, K::PtPtDistance, 301, 302, 5.0);
+    let d = Config::default;
+    let cases = [
+        ("tolerance", d().with_tolerance(0.0), 0.0),
+        ("tolerance", d().with_tolerance(-1e-9), -1e-9),
+        (
+            "tolerance",
+            d().with_tolerance(f64::INFINITY),
+            f64::INFINITY,
+        ),
+        ("dragged_scale", d().with_dragged_scale(0.0), 0.0),
+        ("dragged_scale", d().with_dragged_scale(1.5), 1.5),
+        ("rank_tolerance", d().with_rank_tolerance(0.0), 0.0),
+        ("rank_tolerance", d().with_rank_tolerance(1.0), 1.0),
+    ];
+    for (name, cfg, value) in cases {
+        let err = solve(&mut s.sys, 2.into(), &[], &cfg).unwrap_err();
+        assert!(
+            matches!(err, SolveError::BadOption { name: n, value: v, .. } if n == name && v == value),
+            "{name}: {err:?}"
+        );
+        assert!(err.to_string().contains(name));
+    }
+    let nan = d().with_tolerance(f64::NAN);
+    assert!(matches!(
+        solve(&mut s.sys, 2.into(), &[], &nan),
+        Err(SolveError::BadOption {
+            name: "tolerance",
+            ..
+        })
+    ));
+}
+
+#[test]
+fn error_messages_name_the_object() {
+    let e = ModelError::Dangling {
+        owner: c_id(12),
+        field: "pt_b",
+        target: "entity",
+        handle: 777,
+    };
+    assert_eq!(
+        e.to_string(),
+        "constraint 12: pt_b refers to entity 777, which does not exist"
+    );
+    let e = ModelError::NeedsWorkplane {
+        constraint: ConstraintId(4),
+        kind: K::Horizontal,
+    };
+    assert!(e.to_string().starts_with("constraint 4 (horizontal)"));
+}
+
+const TRIANGLE: &str = include_str!("../../../examples/triangle.json");
+
+fn json_err(text: &str) -> String {
+    Problem::from_json(text).unwrap_err().to_string()
+}
+
+#[test]
+fn malformed_json_is_an_error_with_a_position() {
+    assert!(Problem::from_json(TRIANGLE).is_ok());
+    for cut in [
+        1,
+        TRIANGLE.len() / 3,
+        TRIANGLE.len() / 2,
+        TRIANGLE.len() - 3,
+    ] {
+        let msg = json_err(&TRIANGLE[..cut]);
+        assert!(msg.contains("line") && msg.contains("column"), "{msg}");
+    }
+    assert!(json_err("").contains("EOF"));
+    assert!(json_err("[]").contains("invalid type"));
+    assert!(json_err("{\"params\": 3}").contains("invalid type"));
+}
+
+#[test]
+fn unknown_type_names_are_named_in_the_error() {
+    let text = TRIANGLE.replace("\"line_segment\"", "\"spline_of_doom\"");
+    let msg = json_err(&text);
+    assert!(msg.contains("spline_of_doom"), "{msg}");
+    let text = TRIANGLE.replacen("\"horizontal\"", "\"kinda_horizontal\"", 1);
+    let msg = json_err(&text);
+    assert!(msg.contains("kinda_horizontal"), "{msg}");
+    assert!(
+        msg.contains("points_coincident"),
+        "lists the known types: {msg}"
+    );
+}
+
+#[test]
+fn zero_and_repeated_handles_in_json_are_named() {
+    let text = TRIANGLE.replacen("\"h\": 11,", "\"h\": 0,", 1);
+    assert!(
+        json_err(&text).contains("has handle 0"),
+        "{}",
+        json_err(&text)
+    );
+    let text = TRIANGLE.replacen("\"h\": 12,", "\"h\": 11,", 1);
+    let msg = json_err(&text);
+    assert!(msg.contains("param 11 is defined twice"), "{msg}");
+    let text = TRIANGLE.replacen("\"group\": 2\n }", "\"group\": 2, \"bogus\": 1\n }", 1);
+    let msg = json_err(&text);
+    assert!(msg.contains("bogus"), "{msg}");
+}
+
+#[test]
+fn a_reference_error_in_json_surfaces_at_solve() {
+    let text = TRIANGLE.replacen("\"pt_a\": 301", "\"pt_a\": 399", 1);
+    let mut p = Problem::from_json(&text).unwrap();
+    let req = p.request();
+    let err = solve(&mut p.system, req.group, &req.dragged, &req.config()).unwrap_err();
+    assert_eq!(
+        err,
+        SolveError::Model(ModelError::Dangling {
+            owner: c_id(1),
+            field: "pt_a",
+            target: "entity",
+            handle: 399,
+        })
+    );
+}
+
+/// One random object: an entity or constraint with small random handles everywhere.
+#[derive(Clone, Debug)]
+enum Garbage {
+    Param(u32, u32, f64),
+    Entity(u32, u32, Option<u32>, u8, [u32; 4]),
+    Constraint(u32, u32, usize, Option<u32>, f64, [u32; 6], bool, bool),
+}
+
+fn garbage() -> impl Strategy<Value = Garbage> {
+    let h = 0u32..12;
+    let g = 0u32..4;
+    let val = prop_oneof![
+        -20.0f64..20.0,
+        Just(0.0),
+        Just(1.0),
+        Just(-1.0),
+        Just(1e300),
+        Just(f64::NAN),
+    ];
+    prop_oneof![
+        (h.clone(), g.clone(), val.clone()).prop_map(|(h, g, v)| Garbage::Param(h, g, v)),
+        (
+            h.clone(),
+            g.clone(),
+            proptest::option::of(h.clone()),
+            0u8..10,
+            [h.clone(), h.clone(), h.clone(), h.clone()]
+        )
+            .prop_map(|(h, g, w, k, r)| Garbage::Entity(h, g, w, k, r)),
+        (
+            h.clone(),
+            g,
+            0..K::ALL.len(),
+            proptest::option::of(h.clone()),
+            val,
+            [h.clone(), h.clone(), h.clone(), h.clone(), h.clone(), h],
+            any::<bool>(),
+            any::<bool>()
+        )
+            .prop_map(|(h, g, k, w, v, f, o, o2)| Garbage::Constraint(h, g, k, w, v, f, o, o2)),
+    ]
+}
+
+fn entity_of(h: u32, g: u32, w: Option<u32>, kind: u8, r: [u32; 4]) -> Entity {
+    let mut e = match kind {
+        0 => Entity::point_3d(h, g, [r[0], r[1], r[2]]),
+        1 => Entity::point_2d(h, g, r[3], [r[0], r[1]]),
+        2 => Entity::normal_3d(h, g, r),
+        3 => Entity::normal_2d(h, g, r[0]),
+        4 => Entity::distance(h, g, w, r[0]),
+        5 => Entity::workplane(h, g, r[0], r[1]),
+        6 => Entity::line(h, g, w, r[0], r[1]),
+        7 => Entity::cubic(h, g, w, r),
+        8 => Entity::circle(h, g, w, r[0], r[1], r[2]),
+        _ => Entity::arc(h, g, r[3], r[0], r[1], r[2], r[3]),
+    };
+    if w.is_some() && kind % 2 == 0 {
+        e.workplane = w.map(EntityId);
+    }
+    e
+}
+
+fn build(items: &[Garbage]) -> System {
+    let mut sys = System::new();
+    for it in items {
+        // Adding may fail (zero or repeated handle, NaN): that must be an error, not a panic.
+        let _ = match *it {
+            Garbage::Param(h, g, v) => sys.add_param(Param::new(h, g, v)).map(|_| ()),
+            Garbage::Entity(h, g, w, k, r) => sys.add_entity(entity_of(h, g, w, k, r)).map(|_| ()),
+            Garbage::Constraint(h, g, k, w, v, f, o, o2) => {
+                let mut c = Constraint::new(h, g, K::ALL[k])
+                    .in_workplane(w)
+                    .with_points(f[0], f[1])
+                    .with_entities([f[2], f[3], f[4], f[5]])
+                    .with_flags(o, o2)
+                    .with_val(v);
+                if o && o2 {
+                    c = c.as_reference();
+                }
+                sys.add_constraint(c).map(|_| ())
+            }
+        };
+    }
+    sys
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, ..ProptestConfig::default() })]
+
+    #[test]
+    fn random_garbage_never_panics(
+        items in proptest::collection::vec(garbage(), 0..40),
+        group in 0u32..4,
+        dragged in proptest::collection::vec(0u32..14, 0..3),
+        iters in 0usize..60,
+    ) {
+        let mut sys = build(&items);
+        let valid = sys.validate();
+        let dragged: Vec<ParamId> = dragged.into_iter().map(ParamId).collect();
+        let cfg = Config::default().with_max_iterations(iters);
+        let before = sys.clone();
+        match solve(&mut sys, group.into(), &dragged, &cfg) {
+            Ok(rep) => {
+                prop_assert!(valid.is_ok(), "solved an invalid model: {:?}", valid);
+                prop_assert!(rep.dof <= rep.unknowns);
+                if rep.outcome.is_ok() {
+                    prop_assert!(rep.residual <= cfg.tolerance, "okay with residual {}", rep.residual);
+                } else {
+                    prop_assert!(!rep.failed.is_empty() || !rep.failed_entities.is_empty());
+                    prop_assert_eq!(sys.params(), before.params());
+                }
+                for p in sys.params() {
+                    prop_assert!(p.val.is_finite(), "{} became {}", p.h, p.val);
+                }
+            }
+            Err(SolveError::Model(e)) => prop_assert_eq!(Err(e), valid),
+            Err(SolveError::UnknownDragged(h)) => {
+                prop_assert!(sys.param(ParamId(h)).is_none());
+            }
+            Err(e) => prop_assert!(false, "unexpected error {e}"),
+        }
+        // The JSON round trip of whatever was built parses back to the same lists.
+        let text = serde_json::to_string(&before).unwrap();
+        let back: System = serde_json::from_str(&text).unwrap();
+        prop_assert_eq!(back.params().len(), before.params().len());
+        prop_assert_eq!(back.constraints(), before.constraints());
+    }
+}
+
+/// A fixed pool of geometry in group 2 (every entity type, some degenerate at random
+/// values), so random constraints over it mostly pass validation and reach the equations.
+fn pool(vals: &[f64]) -> System {
+    let mut sys = Sketch::new().sys;
+    for (i, &v) in vals.iter().enumerate() {
+        sys.add_param(Param::new(11 + i as u32, 2, v)).unwrap();
+    }
+    let ents = [
+        Entity::point_2d(301, 2, WP, [11, 12]),
+        Entity::point_2d(302, 2, WP, [13, 14]),
+        Entity::point_2d(303, 2, WP, [15, 16]),
+        Entity::point_2d(304, 2, WP, [17, 18]),
+        Entity::point_3d(305, 2, [19, 20, 21]),
+        Entity::point_3d(306, 2, [22, 23, 24]),
+        Entity::line(311, 2, Some(WP), 301, 302),
+        Entity::line(312, 2, Some(WP), 303, 304),
+        Entity::line(313, 2, None, 305, 306),
+        Entity::line(314, 2, None, 301, 305),
+        Entity::normal_2d(320, 2, WP),
+        Entity::normal_3d(321, 2, [25, 26, 27, 28]),
+        Entity::distance(322, 2, Some(WP), 29),
+        Entity::circle(323, 2, Some(WP), 301, 320, 322),
+        Entity::circle(324, 2, None, 305, 321, 322),
+        Entity::arc(325, 2, WP, 320, 302, 303, 304),
+        Entity::arc(326, 2, WP, 320, 301, 304, 303),
+        Entity::cubic(327, 2, Some(WP), [301, 302, 303, 304]),
+        Entity::cubic(328, 2, None, [305, 306, 301, 302]),
+    ];
+    for e in ents {
+        sys.add_entity(e).unwrap();
+    }
+    sys
+}
+
+const POOL: [u32; 21] = [
+    200, 101, 102, 301, 302, 303, 304, 305, 306, 311, 312, 313, 314, 320, 321, 322, 323, 324, 325,
+    326, 327,
+];
+
+fn value() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        4 => -10.0f64..10.0,
+        1 => Just(0.0),
+        1 => Just(1.0),
+        1 => Just(1e-13),
+        1 => Just(1e8),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 3000, ..ProptestConfig::default() })]
+
+    /// Random constraints on well-formed (often degenerate) geometry: the solve ends with an
+    /// outcome or a typed error, never a panic, and its report is self-consistent.
+    #[test]
+    fn random_constraints_on_valid_geometry_never_panic(
+        vals in proptest::collection::vec(value(), 19),
+        cons in proptest::collection::vec(
+            (0..K::ALL.len(), proptest::bool::weighted(0.8), value(), proptest::array::uniform6(0usize..256), any::<[bool; 3]>()),
+            1..10,
+        ),
+        dragged in proptest::collection::vec(11u32..30, 0..4),
+    ) {
+        let mut sys = pool(&vals);
+        for (i, (k, in_wp, val, picks, flags)) in cons.into_iter().enumerate() {
+            let kind = K::ALL[k];
+            let sig = kind.signature();
+            // Mostly a reference of the right type, sometimes anything, sometimes nothing.
+            let mut f = [0u32; 6];
+            for (j, want) in sig.fields.iter().enumerate() {
+                let pick = picks[j];
+                f[j] = match want {
+                    _ if pick >= 252 => 0,
+                    _ if pick >= 246 => POOL[pick % POOL.len()],
+                    None => 0,
+                    Some(w) => {
+                        let fits: Vec<u32> = POOL
+                            .iter()
+                            .copied()
+                            .filter(|&h| w.accepts(sys.entity(h.into()).unwrap().entity_type()))
+                            .collect();
+                        fits[pick % fits.len()]
+                    }
+                };
+            }
+            let mut c = Constraint::new(i as u32 + 1, 2, kind)
+                .in_workplane(in_wp.then_some(WP))
+                .with_points(f[0], f[1])
+                .with_entities([f[2], f[3], f[4], f[5]])
+                .with_flags(flags[0], flags[1])
+                .with_val(val);
+            if flags[2] && flags[0] {
+                c = c.as_reference();
+            }
+            sys.add_constraint(c).unwrap();
+        }
+        let valid = sys.validate();
+        let dragged: Vec<ParamId> = dragged.into_iter().map(ParamId).collect();
+        let before = sys.clone();
+        let cfg = Config::default();
+        match solve(&mut sys, 2.into(), &dragged, &cfg) {
+            Ok(rep) => {
+                prop_assert!(valid.is_ok());
+                prop_assert!(rep.dof <= rep.unknowns);
+                if rep.outcome.is_ok() {
+                    prop_assert!(rep.residual <= cfg.tolerance);
+                    for p in sys.params() {
+                        prop_assert!(p.val.is_finite(), "{} became {}", p.h, p.val);
+                    }
+                } else {
+                    prop_assert!(!rep.failed.is_empty() || !rep.failed_entities.is_empty());
+                    prop_assert_eq!(sys.params(), before.params());
+                }
+                // Whatever the outcome, a second solve from where the first left off must
+                // not panic either.
+                let _ = solve(&mut sys, 2.into(), &dragged, &cfg);
+            }
+            Err(SolveError::Model(e)) => prop_assert_eq!(Err(e), valid),
+            Err(e) => prop_assert!(false, "unexpected error {e}"),
+        }
+    }
+}

@@ -1,0 +1,74 @@
+//! Scale: a chain of 10,000 line segments solves from a perturbed start, checked against its
+//! constraints independently of the solver and against the exact drawing.
+
+mod common;
+
+use common::perturbed_chain::{chain, Chain};
+use common::{dist, uv};
+use loci::{Outcome, System};
+
+/// The largest violation of any chain constraint, computed from the parameter values alone.
+fn worst_residual(ch: &Chain, sys: &System) -> f64 {
+    let mut worst = 0.0f64;
+    let p = |h: u32| uv(sys, h);
+    let [a0, b0, _] = ch.segments[0];
+    worst = worst.max(dist(p(a0), ch.joints[0])); // where_dragged at the origin
+    worst = worst.max((p(b0)[1] - p(a0)[1]).abs()); // horizontal
+    for (i, &[a, b, _]) in ch.segments.iter().enumerate() {
+        worst = worst.max((dist(p(a), p(b)) - ch.lengths[i]).abs());
+        if let Some(&[a1, b1, _]) = ch.segments.get(i + 1) {
+            worst = worst.max(dist(p(b), p(a1)));
+            let (u, w) = (sub(p(b), p(a)), sub(p(b1), p(a1)));
+            let turn = (u[0] * w[1] - u[1] * w[0]).atan2(u[0] * w[0] + u[1] * w[1]);
+            // Angle rows are sines of the angle error; compare like with like.
+            let err = (turn.abs() - ch.angles[i].to_radians()).sin().abs();
+            worst = worst.max(err);
+        }
+    }
+    worst
+}
+
+fn sub(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
+    [a[0] - b[0], a[1] - b[1]]
+}
+
+fn solve_and_check(n: usize, seed: u64) {
+    let mut ch = chain(n, seed, 0.3);
+    let mut sys = std::mem::take(&mut ch.system);
+    let start = worst_residual(&ch, &sys);
+    assert!(start > 1e-3, "the start is perturbed: {start}");
+    let rep = sys.solve_group(ch.group).unwrap();
+    assert_eq!(rep.outcome, Outcome::Okay, "{rep:?}");
+    // 4n unknowns and 4n independent equations: see the construction's notes.
+    assert_eq!(rep.dof, 0);
+    assert!(rep.failed.is_empty());
+    assert_eq!(
+        rep.unknowns,
+        4 * n - 2 * (n - 1) - 3,
+        "coincidences, pin and horizontal merge"
+    );
+    let worst = worst_residual(&ch, &sys);
+    assert!(worst < 1e-9, "largest residual {worst:e}");
+    // Fully constrained and started near the exact drawing: the solve lands on it. The
+    // tolerance allows for per-joint rounding carried along 10,000 segments.
+    let mut far = 0.0f64;
+    for (i, &[a, _, _]) in ch.segments.iter().enumerate() {
+        far = far.max(dist(uv(&sys, a), ch.joints[i]));
+    }
+    let last = ch.segments[n - 1][1];
+    far = far.max(dist(uv(&sys, last), ch.joints[n]));
+    assert!(far < 1e-8, "joints off the exact drawing by {far:e}");
+}
+
+#[test]
+fn chain_of_ten_thousand_segments_solves_exactly() {
+    solve_and_check(10_000, 1);
+}
+
+#[test]
+fn short_chains_solve_for_several_seeds() {
+    for seed in 2..8 {
+        solve_and_check(50, seed);
+    }
+    solve_and_check(1, 9);
+}
