@@ -127,7 +127,7 @@ impl fmt::Display for EntityFreedom {
 /// The word for an entity type in sentences.
 pub(crate) fn kind_word(t: EntityType) -> &'static str {
     match t {
-        EntityType::PointIn3d | EntityType::PointIn2d => "point",
+        EntityType::PointIn3d | EntityType::PointIn2d | EntityType::PointNTrans => "point",
         EntityType::NormalIn3d | EntityType::NormalIn2d => "normal",
         EntityType::Distance => "distance",
         EntityType::Workplane => "workplane",

@@ -66,13 +66,41 @@ fn compile_entities(
         if e.group != group {
             continue;
         }
-        let kind = match e.kind {
-            EntityKind::NormalIn3d { .. } => EqKind::UnitQuaternion,
-            EntityKind::ArcOfCircle { .. } => EqKind::ArcRadii,
+        let me = ObjectId::Entity(e.h);
+        let mut l = Locals::default();
+        let (kind, ents, val) = match &e.kind {
+            EntityKind::NormalIn3d { .. } => (
+                EqKind::UnitQuaternion,
+                vec![r.entity(me, e.h, &mut l)?],
+                0.0,
+            ),
+            EntityKind::ArcOfCircle { .. } => {
+                (EqKind::ArcRadii, vec![r.entity(me, e.h, &mut l)?], 0.0)
+            }
+            EntityKind::PointNTrans {
+                base,
+                translation,
+                times,
+                ..
+            } => {
+                let own = r.entity(me, e.h, &mut l)?;
+                let base = r.entity(me, *base, &mut l)?;
+                if !matches!(base, Ent::Point(_)) {
+                    return Err(ModelError::MissingField {
+                        owner: me,
+                        field: "base",
+                        expected: "a point",
+                    });
+                }
+                let t = PointRef::P3(r.params(e.h, translation, &mut l)?);
+                (
+                    EqKind::Translated,
+                    vec![own, base, Ent::Point(t)],
+                    f64::from(*times),
+                )
+            }
             _ => continue,
         };
-        let mut l = Locals::default();
-        let ent = r.entity(ObjectId::Entity(e.h), e.h, &mut l)?;
         // An entity of this group whose parameters all belong to earlier groups (a copy) has
         // nothing to solve: its condition holds or not, but it is no equation of this group.
         if !l
@@ -86,8 +114,8 @@ fn compile_entities(
             kind,
             wp: None,
             pts: [None, None],
-            ents: vec![ent],
-            val: 0.0,
+            ents,
+            val,
             other: false,
             other2: false,
             choice: 0,

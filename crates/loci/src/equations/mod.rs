@@ -35,6 +35,8 @@ pub(crate) enum EqKind {
     UnitQuaternion,
     /// An arc's start and end are equally far from its centre.
     ArcRadii,
+    /// A translated point is at its base plus `times` (in `val`) the translation.
+    Translated,
 }
 
 /// A constraint resolved against the model, ready to evaluate.
@@ -114,6 +116,7 @@ impl Equation {
         let k = match self.kind {
             EqKind::UnitQuaternion => return orientation::unit_quaternion(self, &g, out),
             EqKind::ArcRadii => return circles::arc_radii(self, &g, out),
+            EqKind::Translated => return points::translated(self, &g, out),
             EqKind::Constraint(k) => k,
         };
         match k {

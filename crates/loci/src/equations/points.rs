@@ -35,6 +35,21 @@ pub(super) fn pt_in_plane<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>
     out.push(d.dot(g.plane_normal(f)));
 }
 
+/// A translated point (`ents[0]`) is at its base (`ents[1]`) plus `val` times the
+/// translation vector (`ents[2]`, read as a point in 3D): three rows, x, y, z.
+pub(super) fn translated<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let (Ent::Point(p), Ent::Point(base), Ent::Point(t)) = (e.ent(0), e.ent(1), e.ent(2)) else {
+        unreachable!("resolved: three points")
+    };
+    let d = g
+        .pos(p)
+        .minus(g.pos(base))
+        .minus(g.pos(t).scale(S::cst(e.val)));
+    out.push(d.x);
+    out.push(d.y);
+    out.push(d.z);
+}
+
 /// `pt_a` stays at the position it had when the equations were built.
 pub(super) fn where_dragged<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let p = g.at(e.pt(0), e.wp());

@@ -105,7 +105,8 @@ impl<'a> Resolver<'a> {
         Ok(l.slot(i))
     }
 
-    fn params<const N: usize>(
+    /// Resolves parameters `ps` read by entity `owner`.
+    pub(crate) fn params<const N: usize>(
         &self,
         owner: EntityId,
         ps: &[crate::model::ParamId],
@@ -167,6 +168,11 @@ impl<'a> Resolver<'a> {
         };
         Ok(match &e.kind {
             EntityKind::PointIn3d { params } => {
+                Ent::Point(PointRef::P3(self.params(h, params, l)?))
+            }
+            // A translated point has coordinates of its own; its tie to the base is an
+            // implicit equation of its group, so everywhere else it is a point in 3D.
+            EntityKind::PointNTrans { params, .. } => {
                 Ent::Point(PointRef::P3(self.params(h, params, l)?))
             }
             EntityKind::PointIn2d { params } => {

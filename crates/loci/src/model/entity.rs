@@ -36,6 +36,21 @@ pub enum EntityKind {
         /// u, v.
         params: [ParamId; 2],
     },
+    /// A point in 3D held at another point moved by a multiple of a translation vector:
+    /// its own coordinates x, y, z, with the implicit condition
+    /// `(x, y, z) = base + times * translation`. Extrusions and step-and-repeat copies make
+    /// these: the translation is the copying group's unknown, `times` which copy this is.
+    #[serde(rename = "point_n_trans")]
+    PointNTrans {
+        /// x, y, z.
+        params: [ParamId; 3],
+        /// The point it is a copy of (any point).
+        base: EntityId,
+        /// The translation vector's x, y, z.
+        translation: [ParamId; 3],
+        /// How many times the translation is applied (negative for the other side).
+        times: i32,
+    },
     /// An orientation in 3D as a unit quaternion w, x, y, z (with the implicit `|q| = 1`).
     #[serde(rename = "normal_in_3d")]
     NormalIn3d {
@@ -99,6 +114,8 @@ pub enum EntityType {
     PointIn3d,
     #[serde(rename = "point_in_2d")]
     PointIn2d,
+    #[serde(rename = "point_n_trans")]
+    PointNTrans,
     #[serde(rename = "normal_in_3d")]
     NormalIn3d,
     #[serde(rename = "normal_in_2d")]
@@ -118,6 +135,7 @@ impl EntityType {
         match self {
             EntityType::PointIn3d => "point_in_3d",
             EntityType::PointIn2d => "point_in_2d",
+            EntityType::PointNTrans => "point_n_trans",
             EntityType::NormalIn3d => "normal_in_3d",
             EntityType::NormalIn2d => "normal_in_2d",
             EntityType::Distance => "distance",
@@ -132,7 +150,17 @@ impl EntityType {
     /// Whether this is a point.
     #[must_use]
     pub fn is_point(self) -> bool {
-        matches!(self, EntityType::PointIn3d | EntityType::PointIn2d)
+        matches!(
+            self,
+            EntityType::PointIn3d | EntityType::PointIn2d | EntityType::PointNTrans
+        )
+    }
+
+    /// Whether this is a point with three coordinates of its own (a point in 3D or a
+    /// translated point), as a workplane's origin must be.
+    #[must_use]
+    pub fn is_point_3d(self) -> bool {
+        matches!(self, EntityType::PointIn3d | EntityType::PointNTrans)
     }
 
     /// Whether this is a normal.
@@ -155,6 +183,7 @@ impl EntityKind {
         match self {
             EntityKind::PointIn3d { .. } => EntityType::PointIn3d,
             EntityKind::PointIn2d { .. } => EntityType::PointIn2d,
+            EntityKind::PointNTrans { .. } => EntityType::PointNTrans,
             EntityKind::NormalIn3d { .. } => EntityType::NormalIn3d,
             EntityKind::NormalIn2d => EntityType::NormalIn2d,
             EntityKind::Distance { .. } => EntityType::Distance,
@@ -172,8 +201,18 @@ impl EntityKind {
         match self {
             EntityKind::PointIn3d { params } => params,
             EntityKind::PointIn2d { params } => params,
+            EntityKind::PointNTrans { params, .. } => params,
             EntityKind::NormalIn3d { params } => params,
             EntityKind::Distance { param } => std::slice::from_ref(param),
+            _ => &[],
+        }
+    }
+
+    /// Parameters this entity reads besides its own: a translated point's translation.
+    #[must_use]
+    pub fn read_params(&self) -> &[ParamId] {
+        match self {
+            EntityKind::PointNTrans { translation, .. } => translation,
             _ => &[],
         }
     }
@@ -182,6 +221,7 @@ impl EntityKind {
     #[must_use]
     pub fn references(&self) -> Vec<(&'static str, EntityId)> {
         match self {
+            EntityKind::PointNTrans { base, .. } => vec![("base", *base)],
             EntityKind::Workplane { origin, normal } => {
                 vec![("origin", *origin), ("normal", *normal)]
             }
@@ -239,6 +279,29 @@ impl Entity {
             None,
             EntityKind::PointIn3d {
                 params: params.map(ParamId),
+            },
+        )
+    }
+
+    /// A 3D point with coordinates `params`, held at `base + times * translation`.
+    #[must_use]
+    pub fn point_n_trans(
+        h: u32,
+        group: u32,
+        params: [u32; 3],
+        base: u32,
+        translation: [u32; 3],
+        times: i32,
+    ) -> Self {
+        Self::plain(
+            h,
+            group,
+            None,
+            EntityKind::PointNTrans {
+                params: params.map(ParamId),
+                base: EntityId(base),
+                translation: translation.map(ParamId),
+                times,
             },
         )
     }

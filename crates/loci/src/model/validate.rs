@@ -87,6 +87,17 @@ impl System {
                 });
             }
         }
+        for (i, p) in e.kind.read_params().iter().enumerate() {
+            if self.param(*p).is_none() {
+                const NAMES: [&str; 3] = ["translation[0]", "translation[1]", "translation[2]"];
+                return Err(ModelError::Dangling {
+                    owner,
+                    field: NAMES[i],
+                    target: "param",
+                    handle: p.0,
+                });
+            }
+        }
         let needs_wp = matches!(
             e.kind,
             EntityKind::PointIn2d { .. } | EntityKind::NormalIn2d | EntityKind::ArcOfCircle { .. }
@@ -120,7 +131,7 @@ impl System {
                     owner,
                     "origin",
                     *origin,
-                    |t| t == EntityType::PointIn3d,
+                    EntityType::is_point_3d,
                     "a 3D point",
                 )?;
                 self.expect(
@@ -130,6 +141,12 @@ impl System {
                     |t| t == EntityType::NormalIn3d,
                     "a 3D normal",
                 )?;
+            }
+            EntityKind::PointNTrans { base, .. } => {
+                if *base == h {
+                    return Err(ModelError::Cycle { entity: h });
+                }
+                self.expect(owner, "base", *base, point, "a point")?;
             }
             EntityKind::LineSegment { .. } | EntityKind::Cubic { .. } => {
                 for (field, r) in e.kind.references() {

@@ -214,8 +214,9 @@ impl GroupKind {
         }
     }
 
-    /// Whether loci solves groups of this kind: sketches. The others build solids from
-    /// earlier groups; their generated geometry is read from the file as constants.
+    /// Whether this kind is a sketch. Of the others, which build solids from earlier
+    /// groups, loci solves extrusions and step and repeat by translation; the rest's
+    /// generated geometry is read from the file as constants.
     #[must_use]
     pub fn is_sketch(self) -> bool {
         matches!(self, GroupKind::Drawing3d | GroupKind::DrawingWorkplane)

@@ -58,6 +58,14 @@ struct Builder<'a> {
     groups: HashMap<u32, usize>,
     fresh_param: Fresh,
     fresh_entity: Fresh,
+    fresh_constraint: Fresh,
+    /// Groups that copy by translation (extrude, step and repeat), by handle.
+    copiers: HashMap<u32, Copier>,
+    /// File entities modelled as constants although they move with their own group's
+    /// unknowns, with that group: a constraint of that group on them cannot be solved.
+    frozen: HashMap<u32, u32>,
+    /// Every parameter handle of the file.
+    param_handles: HashSet<u32>,
     /// File entities loci did not model, with why.
     skipped: HashMap<u32, &'static str>,
     /// Every entity handle of the file, with its line.
@@ -75,6 +83,7 @@ pub(crate) fn build(
 ) -> Result<SlvsFile, SlvsError> {
     let mut param_handles = HashSet::new();
     let mut entity_handles = HashSet::new();
+    let mut constraint_handles = HashSet::new();
     for r in records {
         match r.kind {
             Kind::Param => {
@@ -82,6 +91,9 @@ pub(crate) fn build(
             }
             Kind::Entity => {
                 entity_handles.insert(r.hex("Entity.h.v"));
+            }
+            Kind::Constraint => {
+                constraint_handles.insert(r.hex("Constraint.h.v"));
             }
             _ => {}
         }
@@ -92,8 +104,12 @@ pub(crate) fn build(
         notes: Vec::new(),
         requests: HashMap::new(),
         groups: HashMap::new(),
-        fresh_param: Fresh::new(param_handles),
+        fresh_param: Fresh::new(param_handles.clone()),
         fresh_entity: Fresh::new(entity_handles),
+        fresh_constraint: Fresh::new(constraint_handles),
+        copiers: HashMap::new(),
+        frozen: HashMap::new(),
+        param_handles,
         skipped: HashMap::new(),
         entity_line: HashMap::new(),
         constraint_line: HashMap::new(),
@@ -103,6 +119,7 @@ pub(crate) fn build(
     b.requests()?;
     b.params()?;
     b.entities()?;
+    b.copier_equations(&mut groups);
     b.constraints(&mut groups)?;
     if solid_lines > 0 {
         b.notes.push(Note {
@@ -176,6 +193,9 @@ impl Builder<'_> {
             let status = if h == REFERENCES {
                 GroupStatus::References
             } else if kind.is_sketch() {
+                GroupStatus::Solve
+            } else if let Some(c) = Copier::of(kind, r) {
+                self.copiers.insert(h, c);
                 GroupStatus::Solve
             } else {
                 GroupStatus::Unsupported(format!("{} groups are not modelled by loci", kind.name()))
@@ -337,6 +357,7 @@ impl Builder<'_> {
         r: &Record,
     ) -> Result<Option<Entity>, SlvsError> {
         use EntityCode as E;
+        let code = r.int("Entity.type");
         let generated = h & GROUP_BIT != 0;
         let group = if generated {
             FIXED_GROUP.0
@@ -400,6 +421,13 @@ impl Builder<'_> {
                     })
                 }
             },
+            E::PointCopy if code == POINT_N_TRANS => match self.translated(h, act_point) {
+                Some(e) => e,
+                None => {
+                    let params = act_point.map(|v| self.constant(v));
+                    Entity::point_3d(h, FIXED_GROUP.0, params)
+                }
+            },
             E::PointCopy => {
                 let params = act_point.map(|v| self.constant(v));
                 Entity::point_3d(h, FIXED_GROUP.0, params)
@@ -414,13 +442,39 @@ impl Builder<'_> {
             }
             E::Face => {
                 // A face is a plane: its point and its (unit) normal vector, which SolveSpace
-                // saves as the vector part of `actNormal`.
+                // saves as the vector part of `actNormal`. The normal of the faces a
+                // translation makes is fixed; their point moves with the translation.
                 let n = [act_normal[1], act_normal[2], act_normal[3]];
                 let Some(q) = rotation_to(n) else {
                     self.skip(h, r, kind, "its normal is zero");
                     return Ok(None);
                 };
-                let origin = self.constant_point(act_point);
+                let copier = self.copiers.contains_key(&((h >> 16) & 0x7fff));
+                let origin = match code {
+                    // A face through a point the group copied (an extrusion's top or bottom).
+                    FACE_NORMAL_PT if copier && pt(0) >> 16 == h >> 16 => pt(0),
+                    // A copied face: the source face's point, translated.
+                    FACE_N_TRANS if copier => match self.translated(h, act_point) {
+                        Some(e) => {
+                            let p = self.fresh_entity.take();
+                            let e = Entity {
+                                h: EntityId(p),
+                                ..e
+                            };
+                            let _ = self.sys.add_entity(e);
+                            p
+                        }
+                        None => self.constant_point(act_point),
+                    },
+                    _ => {
+                        if copier && code != FACE_NORMAL_PT {
+                            // Its normal turns with the translation (a line swept into a
+                            // face); loci holds it where it was saved.
+                            self.frozen.insert(h, (h >> 16) & 0x7fff);
+                        }
+                        self.constant_point(act_point)
+                    }
+                };
                 let normal = self.constant_normal(q);
                 Entity::workplane(h, FIXED_GROUP.0, origin, normal)
             }
@@ -479,6 +533,154 @@ impl Builder<'_> {
             }
         };
         Ok(Some(e))
+    }
+
+    /// The model of a point group `g` made by translating another (`h` is the file's
+    /// entity, at `at` as saved): its own coordinates, tied to its source point plus the
+    /// group's translation times the copy's number. `None` when the group does not copy by
+    /// translation, or the remap table, the source or the translation is missing; the
+    /// caller then holds the point where it was saved, and a constraint of its group on it
+    /// makes that group unsupported.
+    fn translated(&mut self, h: u32, at: [f64; 3]) -> Option<Entity> {
+        let g = (h >> 16) & 0x7fff;
+        let base_h = h & 0xffff_0000;
+        let copier = self.copiers.get(&g)?;
+        let found = copier
+            .remap
+            .get(&(h & 0xffff))
+            .and_then(|&(src, copy)| Some((src, copier.times(copy)?)));
+        let translation = [base_h, base_h | 1, base_h | 2];
+        let ok = translation.iter().all(|p| self.param_handles.contains(p));
+        let source = found.and_then(|(src, times)| {
+            // The source of a copied face is a face: its point is the one translated.
+            match self.sys.entity(EntityId(src)).map(|e| &e.kind) {
+                Some(k) if k.entity_type().is_point() => Some((src, times)),
+                Some(crate::EntityKind::Workplane { origin, .. }) if self.is_face(src) => {
+                    Some((origin.0, times))
+                }
+                _ => None,
+            }
+        });
+        let Some((src, times)) = source.filter(|_| ok) else {
+            self.frozen.insert(h, g);
+            return None;
+        };
+        // Start where the source and the saved translation put it: SolveSpace saves
+        // `actPoint` as of its last regeneration, which need not be current.
+        let at = match (self.position(EntityId(src)), self.values(translation)) {
+            (Some(b), Some(t)) => [0, 1, 2].map(|i| b[i] + f64::from(times) * t[i]),
+            _ => at,
+        };
+        let params = at.map(|v| {
+            let p = self.fresh_param.take();
+            let _ = self.sys.add_param(Param::new(p, g, v));
+            p
+        });
+        Some(Entity::point_n_trans(h, g, params, src, translation, times))
+    }
+
+    /// The values of parameters `ps`, if all are in the model.
+    fn values<const N: usize>(&self, ps: [u32; N]) -> Option<[f64; N]> {
+        let mut out = [0.0; N];
+        for (o, p) in out.iter_mut().zip(ps) {
+            *o = self.sys.value(crate::ParamId(p))?;
+        }
+        Some(out)
+    }
+
+    /// Where point `h` is, from the current parameter values.
+    fn position(&self, h: EntityId) -> Option<[f64; 3]> {
+        use crate::geom::Quat;
+        let e = self.sys.entity(h)?;
+        match &e.kind {
+            crate::EntityKind::PointIn3d { params }
+            | crate::EntityKind::PointNTrans { params, .. } => self.values(params.map(|p| p.0)),
+            crate::EntityKind::PointIn2d { params } => {
+                let [u, v] = self.values(params.map(|p| p.0))?;
+                let crate::EntityKind::Workplane { origin, normal } =
+                    &self.sys.entity(e.workplane?)?.kind
+                else {
+                    return None;
+                };
+                let o = self.position(*origin)?;
+                let crate::EntityKind::NormalIn3d { params } = &self.sys.entity(*normal)?.kind
+                else {
+                    return None;
+                };
+                let [w, x, y, z] = self.values(params.map(|p| p.0))?;
+                let q = Quat { w, x, y, z };
+                let (qu, qv) = (q.u(), q.v());
+                Some([0, 1, 2].map(|i| o[i] + u * qu.at(i) + v * qv.at(i)))
+            }
+            _ => None,
+        }
+    }
+
+    /// Whether file entity `h` is a face (a workplane loci made for it).
+    fn is_face(&self, h: u32) -> bool {
+        h & GROUP_BIT != 0 && self.entity_line.contains_key(&h)
+    }
+
+    /// The conditions a group that copies by translation puts on its translation vector
+    /// (SolveSpace writes them as the group's own equations): an extrusion goes along the
+    /// normal of its workplane (unless skewed), a step and repeat stays parallel to its
+    /// workplane. Written as constraints of the group on the vector as a point from the
+    /// origin, with handles the file does not use.
+    fn copier_equations(&mut self, groups: &mut [SlvsGroup]) {
+        let mut hs: Vec<u32> = self.copiers.keys().copied().collect();
+        hs.sort_unstable();
+        for g in hs {
+            let c = &self.copiers[&g];
+            let (kind, wp) = (c.kind, c.workplane);
+            let base_h = GROUP_BIT | g << 16;
+            let translation = [base_h, base_h | 1, base_h | 2];
+            let gi = self.groups[&g];
+            if !translation.iter().all(|p| self.param_handles.contains(p)) {
+                groups[gi].status = GroupStatus::Unsupported(
+                    "the file does not hold the group's translation vector".into(),
+                );
+                continue;
+            }
+            let Some(wp) = wp else { continue };
+            let plane = match self.sys.entity(EntityId(wp)).map(|e| &e.kind) {
+                Some(crate::EntityKind::Workplane { normal, .. }) => *normal,
+                _ => {
+                    groups[gi].status = GroupStatus::Unsupported(format!(
+                        "its workplane {wp:08x} is not one loci models"
+                    ));
+                    continue;
+                }
+            };
+            let vector = self.fresh_entity.take();
+            let _ = self
+                .sys
+                .add_entity(Entity::point_3d(vector, g, translation));
+            let origin = self.constant_point([0.0; 3]);
+            let h = self.fresh_constraint.take();
+            let c = match kind {
+                // u . t = 0 and v . t = 0: the vector projects onto the workplane's origin.
+                GroupKind::Extrude => {
+                    Constraint::new(h, g, crate::ConstraintKind::PointsCoincident)
+                        .in_workplane(Some(wp))
+                        .with_points(vector, origin)
+                }
+                // n . t = 0: the vector lies in a plane through the origin with the
+                // workplane's normal.
+                _ => {
+                    let through = self.fresh_entity.take();
+                    let _ = self.sys.add_entity(Entity::workplane(
+                        through,
+                        FIXED_GROUP.0,
+                        origin,
+                        plane.0,
+                    ));
+                    Constraint::new(h, g, crate::ConstraintKind::PtInPlane)
+                        .with_points(vector, 0)
+                        .with_entities([through, 0, 0, 0])
+                }
+            };
+            let _ = self.sys.add_constraint(c);
+        }
     }
 
     fn skip(&mut self, h: u32, r: &Record, kind: EntityCode, why: &'static str) {
@@ -544,6 +746,13 @@ impl Builder<'_> {
                         handle: e,
                     });
                 }
+                if self.frozen.get(&e) == Some(&g) {
+                    unmodelled = Some(format!(
+                        "constraint {h:08x} ({}) refers to entity {e:08x}, which moves with \
+                         the group's translation in a way loci does not model",
+                        kind.name()
+                    ));
+                }
                 if let Some(what) = self.skipped.get(&e) {
                     unmodelled = Some(format!(
                         "constraint {h:08x} ({}) refers to entity {e:08x} ({what}), which loci \
@@ -583,6 +792,119 @@ impl Builder<'_> {
             })?;
         }
         Ok(())
+    }
+}
+
+/// SolveSpace's entity type of a translated point.
+const POINT_N_TRANS: i64 = 2010;
+/// A face through a point with a fixed normal.
+const FACE_NORMAL_PT: i64 = 5000;
+/// A face translated from another.
+const FACE_N_TRANS: i64 = 5003;
+
+/// A group that copies the entities of another by translation: which copy number each of
+/// its entities is, and the workplane that steers the translation.
+struct Copier {
+    kind: GroupKind,
+    /// Entity index in the group -> (source entity, copy number), from `Group.remap`.
+    remap: HashMap<u32, (u32, u32)>,
+    /// Copy number -> times the translation is applied.
+    times: HashMap<u32, i32>,
+    /// `predef.entityB`: the extrusion goes along its normal, a step and repeat stays
+    /// parallel to it. `None` for a skewed extrusion or one free in 3D.
+    workplane: Option<u32>,
+}
+
+impl Copier {
+    /// SolveSpace's copy numbers for an extrusion's top and bottom.
+    const TOP: u32 = 1001;
+    const BOTTOM: u32 = 1002;
+    /// The last copy of a step and repeat.
+    const LAST: u32 = 1000;
+
+    /// The copier for a group record, or `None` when the group does not copy by
+    /// translation (or has a subtype loci does not know).
+    fn of(kind: GroupKind, r: &Record) -> Option<Self> {
+        const ONE_SIDED: i64 = 7000;
+        const TWO_SIDED: i64 = 7001;
+        const ONE_SKEWED: i64 = 7004;
+        const TWO_SKEWED: i64 = 7005;
+        let subtype = r.int("Group.subtype");
+        let wp = match r.hex("Group.predef.entityB.v") {
+            0 => None,
+            w => Some(w),
+        };
+        let mut times = HashMap::new();
+        let workplane = match kind {
+            GroupKind::Extrude => {
+                let (bottom, top, skewed) = match subtype {
+                    ONE_SIDED => (0, 2, false),
+                    TWO_SIDED => (-1, 1, false),
+                    ONE_SKEWED => (0, 2, true),
+                    TWO_SKEWED => (-1, 1, true),
+                    _ => return None,
+                };
+                times.insert(Self::BOTTOM, bottom);
+                times.insert(Self::TOP, top);
+                if skewed {
+                    None
+                } else {
+                    wp
+                }
+            }
+            GroupKind::Translate => {
+                let one_sided = match subtype {
+                    ONE_SIDED => true,
+                    TWO_SIDED => false,
+                    _ => return None,
+                };
+                times = Self::repeat_times(
+                    r.float("Group.valA"),
+                    one_sided,
+                    r.flag("Group.skipFirst"),
+                )?;
+                wp
+            }
+            _ => return None,
+        };
+        let remap = r
+            .remap("Group.remap")
+            .iter()
+            .map(|&(i, src, copy)| (i, (src, copy)))
+            .collect();
+        Some(Self {
+            kind,
+            remap,
+            times,
+            workplane,
+        })
+    }
+
+    /// Copy number -> times applied for a step and repeat of `copies` copies. Copy `a` of
+    /// `a0..n` sits at `2a` translations (one side) or centred about the original (two
+    /// sides); the last copy has its own number. (SolveSpace's translation vector is half
+    /// the step.)
+    fn repeat_times(copies: f64, one_sided: bool, skip_first: bool) -> Option<HashMap<u32, i32>> {
+        if !(1.0..=1e6).contains(&copies) {
+            return None;
+        }
+        let mut n = copies as i64;
+        let mut a0 = 0;
+        if one_sided && skip_first {
+            a0 += 1;
+            n += 1;
+        }
+        let mut times = HashMap::new();
+        for a in a0..n {
+            let t = a * 2 - if one_sided { 0 } else { n - 1 };
+            let copy = if a == n - 1 { Self::LAST } else { a as u32 };
+            times.insert(copy, i32::try_from(t).ok()?);
+        }
+        Some(times)
+    }
+
+    fn times(&self, copy: u32) -> Option<i32> {
+        self.times.get(&copy).copied()
     }
 }
 
@@ -634,6 +956,26 @@ fn rotation_to(n: [f64; 3]) -> Option<[f64; 4]> {
 mod tests {
     use super::*;
     use crate::geom::Quat;
+
+    #[test]
+    fn step_and_repeat_copies_are_numbered_as_solvespace_does() {
+        let sorted = |m: HashMap<u32, i32>| {
+            let mut v: Vec<(u32, i32)> = m.into_iter().collect();
+            v.sort_unstable();
+            v
+        };
+        // One side, three copies: the original's place, then 2t and 4t (the last).
+        let t = Copier::repeat_times(3.0, true, false).unwrap();
+        assert_eq!(sorted(t), vec![(0, 0), (1, 2), (Copier::LAST, 4)]);
+        // Skipping the first keeps three copies, moved one step on.
+        let t = Copier::repeat_times(3.0, true, true).unwrap();
+        assert_eq!(sorted(t), vec![(1, 2), (2, 4), (Copier::LAST, 6)]);
+        // Two sides: centred on the original.
+        let t = Copier::repeat_times(3.0, false, false).unwrap();
+        assert_eq!(sorted(t), vec![(0, -2), (1, 0), (Copier::LAST, 2)]);
+        assert!(Copier::repeat_times(0.0, true, false).is_none());
+        assert!(Copier::repeat_times(f64::NAN, true, false).is_none());
+    }
 
     #[test]
     fn rotation_to_maps_z_onto_the_normal() {

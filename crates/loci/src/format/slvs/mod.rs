@@ -14,11 +14,18 @@
 //! ```
 //!
 //! What loci models: sketch groups (in 3D and in a workplane) with every request SolveSpace
-//! draws (workplanes, datum points, lines, cubics, circles, arcs) and every constraint type.
-//! What it does not: groups that build solids (extrude, lathe, revolve, helix, step and
-//! repeat, linked parts) are reported as unsupported by name and left as saved; the
-//! geometry they generate is read from the file as constants, so later sketches that use it
-//! still solve. Text, images, splines through more than four points and periodic splines
+//! draws (workplanes, datum points, lines, cubics, circles, arcs) and every constraint type;
+//! extrusions and step-and-repeat by translation, whose copied points are
+//! [`point_n_trans`](crate::EntityKind::PointNTrans) entities tied to their source by the
+//! group's translation vector (its unknown, held along the workplane's normal for an
+//! extrusion and in the workplane for a step and repeat, as SolveSpace does), with their
+//! top and bottom faces (and copied faces) as planes through those points. A face swept
+//! from a line, whose normal turns with the translation, is held as saved; a constraint of
+//! its own group on it makes that group unsupported.
+//! What it does not: the other groups that build solids (lathe, revolve, helix, step and
+//! repeat by rotation, linked parts) are reported as unsupported by name and left as
+//! saved; the geometry they generate is read from the file as constants, so later
+//! sketches that use it still solve. Text, images, splines through more than four points and periodic splines
 //! are skipped (their points are modelled); the saved solid (meshes, surfaces) is skipped.
 //! Each skip is recorded as a [`Note`].
 //!

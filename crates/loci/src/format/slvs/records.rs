@@ -255,6 +255,13 @@ impl Record {
     }
 
     /// A flag; false when absent.
+    pub fn remap(&self, key: &str) -> &[(u32, u32, u32)] {
+        match self.get(key).map(|f| &f.value) {
+            Some(Value::Remap(v)) => v,
+            _ => &[],
+        }
+    }
+
     pub fn flag(&self, key: &str) -> bool {
         matches!(self.get(key).map(|f| &f.value), Some(Value::Bool(true)))
     }
