@@ -3,6 +3,17 @@
 //! Exit status: 0 solved (okay or okay with redundant constraints), 1 inconsistent,
 //! 2 did not converge, 3 bad input (unreadable, malformed or invalid model).
 
+/// Prints to standard output; a closed pipe (`loci solve f | head`) ends the program quietly
+/// with status 0 instead of a panic.
+macro_rules! out {
+    ($($t:tt)*) => { $crate::emit(&format!($($t)*)) };
+}
+
+/// [`out!`] with a newline.
+macro_rules! outln {
+    ($($t:tt)*) => { $crate::emit(&format!("{}\n", format!($($t)*))) };
+}
+
 mod check;
 mod conformance;
 mod report;
@@ -119,12 +130,12 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             let rep = loci::solve(&mut problem.system, req.group, &req.dragged, &req.config())
                 .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
             if json {
-                println!(
+                outln!(
                     "{}",
                     SolveResult::new(&problem.system, req.group, &rep).to_json()
                 );
             } else {
-                print!(
+                out!(
                     "{}",
                     report::render(
                         &file.display().to_string(),
@@ -158,12 +169,12 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             let d = loci::diagnose(&problem.system, req.group, &req.config())
                 .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
             if json {
-                println!(
+                outln!(
                     "{}",
                     serde_json::to_string_pretty(&d).map_err(|e| anyhow::anyhow!("{e}"))?
                 );
             } else {
-                print!(
+                out!(
                     "{}",
                     check::render(&file.display().to_string(), &problem.system, &d, all)
                 );
@@ -179,14 +190,14 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             match output {
                 Some(out) => std::fs::write(&out, text)
                     .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?,
-                None => println!("{text}"),
+                None => outln!("{text}"),
             }
             Ok(code::SOLVED)
         }
         Command::Conformance { dir } => {
             let cmd = format!("loci conformance {}", dir.display());
             let (md, _) = conformance::run(&dir, &cmd)?;
-            print!("{md}");
+            out!("{md}");
             Ok(code::SOLVED)
         }
     }
@@ -197,5 +208,18 @@ pub(crate) fn exit_code(o: loci::Outcome) -> u8 {
         loci::Outcome::Okay | loci::Outcome::RedundantOkay => code::SOLVED,
         loci::Outcome::Inconsistent => code::INCONSISTENT,
         loci::Outcome::DidNotConverge => code::DID_NOT_CONVERGE,
+    }
+}
+
+/// Writes `s` to standard output, exiting quietly when the reader has gone away.
+pub(crate) fn emit(s: &str) {
+    use std::io::Write;
+    let mut o = std::io::stdout().lock();
+    if let Err(e) = o.write_all(s.as_bytes()).and_then(|()| o.flush()) {
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("loci: error: cannot write the output: {e}");
+        std::process::exit(3);
     }
 }

@@ -37,9 +37,9 @@ pub(crate) fn solve(
     }
     if json {
         let v: Vec<serde_json::Value> = shown.iter().map(|r| group_json(r)).collect();
-        println!("{}", serde_json::to_string_pretty(&v)?);
+        outln!("{}", serde_json::to_string_pretty(&v)?);
     } else {
-        print!("{}", render(&file.display().to_string(), &f, &shown));
+        out!("{}", render(&file.display().to_string(), &f, &shown));
     }
     if let Some(out) = output {
         let bytes = if out.extension().is_some_and(|e| e == "json") {
