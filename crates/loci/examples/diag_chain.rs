@@ -34,6 +34,11 @@ fn main() {
         times.push(t.elapsed().as_secs_f64() * 1e3);
         if times.len() == 1 {
             println!("{} conflicting set(s), dof {}", d.conflicting.len(), d.dof);
+            if std::env::var_os("SHOW").is_some() {
+                for c in &d.conflicting {
+                    println!("  {:?} verified {}", c.members, c.verified);
+                }
+            }
         }
     }
     times.sort_by(f64::total_cmp);

@@ -6,14 +6,20 @@
 use crate::equations::Owner;
 use std::collections::VecDeque;
 
+/// No arc.
+const NONE: u32 = u32::MAX;
+
 /// The merged parameter sets of one solve.
 pub(crate) struct Substitution {
     parent: Vec<u32>,
     /// For a root: the value its set is fixed at, the parameter the value was applied to, and
     /// the equation that applied it.
     fixed: Vec<Option<(f64, u32, Owner)>>,
-    /// Spanning forest of accepted merges: per parameter, (neighbour, equation).
-    edges: Vec<Vec<(u32, Owner)>>,
+    /// Spanning forest of accepted merges, as adjacency lists threaded through one array (no
+    /// list per parameter): the first arc out of each parameter, or `NONE`.
+    head: Vec<u32>,
+    /// Arcs: (neighbour, equation, next arc out of the same parameter).
+    arcs: Vec<(u32, Owner, u32)>,
     /// Equations that depend on others here, each with the set of equations involved.
     pub redundant: Vec<Vec<Owner>>,
     /// Equations that contradict others here, each with the set involved.
@@ -27,7 +33,8 @@ impl Substitution {
         Self {
             parent: (0..n as u32).collect(),
             fixed: vec![None; n],
-            edges: vec![Vec::new(); n],
+            head: vec![NONE; n],
+            arcs: Vec::new(),
             redundant: Vec::new(),
             conflicts: Vec::new(),
             removed: 0,
@@ -65,11 +72,14 @@ impl Substitution {
             if x as usize == b {
                 break;
             }
-            for &(y, o) in &self.edges[x as usize] {
+            let mut arc = self.head[x as usize];
+            while arc != NONE {
+                let (y, o, next) = self.arcs[arc as usize];
                 if let std::collections::hash_map::Entry::Vacant(e) = prev.entry(y) {
                     e.insert((x, o));
                     q.push_back(y);
                 }
+                arc = next;
             }
         }
         let mut out = Vec::new();
@@ -114,8 +124,10 @@ impl Substitution {
             _ => {}
         }
         self.parent[rb as usize] = ra as u32;
-        self.edges[a].push((b as u32, owner));
-        self.edges[b].push((a as u32, owner));
+        for (from, to) in [(a, b), (b, a)] {
+            self.arcs.push((to as u32, owner, self.head[from]));
+            self.head[from] = (self.arcs.len() - 1) as u32;
+        }
         self.removed += 1;
     }
 
