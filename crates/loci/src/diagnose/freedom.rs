@@ -198,7 +198,9 @@ impl Ctx<'_> {
         match &e.kind {
             EntityKind::PointIn3d { params }
             | EntityKind::PointNTrans { params, .. }
-            | EntityKind::PointNRotTrans { params, .. } => params.iter().for_each(|&p| push(p, out)),
+            | EntityKind::PointNRotTrans { params, .. } => {
+                params.iter().for_each(|&p| push(p, out))
+            }
             EntityKind::PointIn2d { params } => params.iter().for_each(|&p| push(p, out)),
             EntityKind::NormalIn3d { params } | EntityKind::NormalNRot { params, .. } => {
                 params.iter().for_each(|&p| push(p, out))
@@ -283,7 +285,9 @@ impl Ctx<'_> {
                     _ => vec![Motion::InSpace],
                 }
             }
-            EntityKind::NormalIn3d { .. } | EntityKind::NormalIn2d | EntityKind::NormalNRot { .. } => {
+            EntityKind::NormalIn3d { .. }
+            | EntityKind::NormalIn2d
+            | EntityKind::NormalNRot { .. } => {
                 if r == 1 && own.len() == 4 {
                     let q: Vec<f64> = own.iter().map(|&p| self.value(p)).collect();
                     let dq = self.embed(&own, params, &span.basis[0]);

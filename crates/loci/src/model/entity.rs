@@ -275,7 +275,8 @@ impl EntityKind {
     pub fn references(&self) -> Vec<(&'static str, EntityId)> {
         match self {
             EntityKind::PointNTrans { base, .. } => vec![("base", *base)],
-            EntityKind::PointNRotTrans { rotation, .. } | EntityKind::NormalNRot { rotation, .. } => {
+            EntityKind::PointNRotTrans { rotation, .. }
+            | EntityKind::NormalNRot { rotation, .. } => {
                 vec![("rotation", *rotation)]
             }
             EntityKind::Workplane { origin, normal } => {

@@ -150,11 +150,23 @@ impl System {
             }
             EntityKind::PointNRotTrans { base, rotation, .. } => {
                 finite(owner, "base", base)?;
-                self.expect(owner, "rotation", *rotation, |t| t == EntityType::NormalIn3d, "a 3D normal")?;
+                self.expect(
+                    owner,
+                    "rotation",
+                    *rotation,
+                    |t| t == EntityType::NormalIn3d,
+                    "a 3D normal",
+                )?;
             }
             EntityKind::NormalNRot { base, rotation, .. } => {
                 finite(owner, "base", base)?;
-                self.expect(owner, "rotation", *rotation, |t| t == EntityType::NormalIn3d, "a 3D normal")?;
+                self.expect(
+                    owner,
+                    "rotation",
+                    *rotation,
+                    |t| t == EntityType::NormalIn3d,
+                    "a 3D normal",
+                )?;
             }
             EntityKind::LineSegment { .. } | EntityKind::Cubic { .. } => {
                 for (field, r) in e.kind.references() {

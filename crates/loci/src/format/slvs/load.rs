@@ -720,9 +720,7 @@ impl Builder<'_> {
         match &e.kind {
             crate::EntityKind::PointIn3d { params }
             | crate::EntityKind::PointNTrans { params, .. }
-            | crate::EntityKind::PointNRotTrans { params, .. } => {
-                self.values(params.map(|p| p.0))
-            }
+            | crate::EntityKind::PointNRotTrans { params, .. } => self.values(params.map(|p| p.0)),
             crate::EntityKind::PointIn2d { params } => {
                 let [u, v] = self.values(params.map(|p| p.0))?;
                 let crate::EntityKind::Workplane { origin, normal } =
