@@ -39,12 +39,14 @@
 
 mod codes;
 pub mod conformance;
+mod export;
 mod load;
 mod records;
 mod solve;
 mod write;
 
 pub use codes::GroupKind;
+pub use export::{export, Export, ExportError};
 pub use load::FIXED_GROUP;
 pub use solve::{solve_all, GroupResult, GroupSolve};
 
