@@ -31,7 +31,10 @@ fn every_example_converts_and_solves_to_the_same_parameters() {
         let mut file = SlvsFile::parse(&out.bytes).unwrap_or_else(|e| panic!("{name}: {e}"));
         // Every parameter of the system has a place in the file, at its value.
         for p in problem.system.params() {
-            let q = out.params.get(&p.h).unwrap_or_else(|| panic!("{name}: {} not written", p.h));
+            let q = out
+                .params
+                .get(&p.h)
+                .unwrap_or_else(|| panic!("{name}: {} not written", p.h));
             assert_eq!(file.system.value(*q), Some(p.val), "{name}: {}", p.h);
         }
         // loci's JSON solve of the requested group, and the file solved group by group.
@@ -114,10 +117,17 @@ fn solvespace_fixtures_go_through_json_and_back_keeping_every_value() {
         let out = export(&back).unwrap_or_else(|e| panic!("{name}: {e}"));
         let again = SlvsFile::parse(&out.bytes).unwrap_or_else(|e| panic!("{name}: {e}"));
         for p in loaded.system.params() {
-            let q = out.params.get(&p.h).unwrap_or_else(|| panic!("{name}: {} lost", p.h));
+            let q = out
+                .params
+                .get(&p.h)
+                .unwrap_or_else(|| panic!("{name}: {} lost", p.h));
             let v = again.system.value(*q).unwrap();
             // Written with 20 decimals, as SolveSpace writes.
-            assert!((v - p.val).abs() <= 1e-15 * (1.0 + p.val.abs()), "{name}: {}", p.h);
+            assert!(
+                (v - p.val).abs() <= 1e-15 * (1.0 + p.val.abs()),
+                "{name}: {}",
+                p.h
+            );
         }
     }
 }

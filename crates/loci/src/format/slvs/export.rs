@@ -24,7 +24,9 @@
 use super::codes::GroupKind;
 use super::records::MAGIC;
 use crate::geom::Quat;
-use crate::model::{Constraint, ConstraintKind, Entity, EntityId, EntityKind, GroupId, ParamId, System};
+use crate::model::{
+    Constraint, ConstraintKind, Entity, EntityId, EntityKind, GroupId, ParamId, System,
+};
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::fmt::Write;
 use thiserror::Error;
@@ -365,12 +367,14 @@ impl<'a> Writer<'a> {
     }
 
     fn entity(&self, h: EntityId) -> Result<&'a Entity, ExportError> {
-        self.sys.entity(h).ok_or(ExportError::Model(crate::ModelError::Dangling {
-            owner: crate::ObjectId::Entity(h),
-            field: "entity",
-            target: "entity",
-            handle: h.0,
-        }))
+        self.sys
+            .entity(h)
+            .ok_or(ExportError::Model(crate::ModelError::Dangling {
+                owner: crate::ObjectId::Entity(h),
+                field: "entity",
+                target: "entity",
+                handle: h.0,
+            }))
     }
 
     /// Where loci point `p` is in space.
@@ -687,7 +691,11 @@ impl<'a> Writer<'a> {
         }
         self.entities.sort_by_key(|e| e.h);
         for e in &self.entities {
-            let _ = write!(s, "Entity.h.v={:08x}\nEntity.type={}\nEntity.construction=0\n", e.h, e.kind);
+            let _ = write!(
+                s,
+                "Entity.h.v={:08x}\nEntity.type={}\nEntity.construction=0\n",
+                e.h, e.kind
+            );
             for (i, p) in e.points.iter().enumerate() {
                 let _ = write!(s, "Entity.point[{i}].v={p:08x}\n");
             }
@@ -755,7 +763,11 @@ impl<'a> Writer<'a> {
                 let _ = write!(s, "Constraint.{name}.v={v:08x}\n");
             }
         }
-        let (other, other2) = if tie { (false, false) } else { (c.other, c.other2) };
+        let (other, other2) = if tie {
+            (false, false)
+        } else {
+            (c.other, c.other2)
+        };
         let _ = write!(
             s,
             "Constraint.other={}\nConstraint.other2={}\nConstraint.reference={}\n",
