@@ -672,16 +672,16 @@ impl<'a> Writer<'a> {
         let mut params = std::mem::take(&mut self.params);
         params.sort_by_key(|p| p.0);
         for (h, v) in params {
-            let _ = write!(s, "Param.h.v.={h:08x}\n");
+            let _ = writeln!(s, "Param.h.v.={h:08x}");
             if v != 0.0 {
-                let _ = write!(s, "Param.val={v:.20}\n");
+                let _ = writeln!(s, "Param.val={v:.20}");
             }
             s.push_str("AddParam\n\n");
         }
         for r in &self.requests {
-            let _ = write!(s, "Request.h.v={:08x}\nRequest.type={}\n", r.h, r.kind);
+            let _ = writeln!(s, "Request.h.v={:08x}\nRequest.type={}", r.h, r.kind);
             if r.workplane != 0 {
-                let _ = write!(s, "Request.workplane.v={:08x}\n", r.workplane);
+                let _ = writeln!(s, "Request.workplane.v={:08x}", r.workplane);
             }
             let _ = write!(
                 s,
@@ -691,22 +691,22 @@ impl<'a> Writer<'a> {
         }
         self.entities.sort_by_key(|e| e.h);
         for e in &self.entities {
-            let _ = write!(
+            let _ = writeln!(
                 s,
-                "Entity.h.v={:08x}\nEntity.type={}\nEntity.construction=0\n",
+                "Entity.h.v={:08x}\nEntity.type={}\nEntity.construction=0",
                 e.h, e.kind
             );
             for (i, p) in e.points.iter().enumerate() {
-                let _ = write!(s, "Entity.point[{i}].v={p:08x}\n");
+                let _ = writeln!(s, "Entity.point[{i}].v={p:08x}");
             }
             if e.normal != 0 {
-                let _ = write!(s, "Entity.normal.v={:08x}\n", e.normal);
+                let _ = writeln!(s, "Entity.normal.v={:08x}", e.normal);
             }
             if e.distance != 0 {
-                let _ = write!(s, "Entity.distance.v={:08x}\n", e.distance);
+                let _ = writeln!(s, "Entity.distance.v={:08x}", e.distance);
             }
             if e.workplane != 0 {
-                let _ = write!(s, "Entity.workplane.v={:08x}\n", e.workplane);
+                let _ = writeln!(s, "Entity.workplane.v={:08x}", e.workplane);
             }
             s.push_str("Entity.actVisible=1\nAddEntity\n\n");
         }
@@ -736,18 +736,18 @@ impl<'a> Writer<'a> {
             }
         };
         let mut s = String::new();
-        let _ = write!(
+        let _ = writeln!(
             s,
-            "Constraint.type={}\nConstraint.group.v={:08x}\n",
+            "Constraint.type={}\nConstraint.group.v={:08x}",
             constraint_code(c.kind),
             self.groups.get(&c.group)?.0
         );
         let wp = map(c.workplane, false)?;
         if wp != 0 {
-            let _ = write!(s, "Constraint.workplane.v={wp:08x}\n");
+            let _ = writeln!(s, "Constraint.workplane.v={wp:08x}");
         }
         if c.val != 0.0 {
-            let _ = write!(s, "Constraint.valA={:.20}\n", c.val);
+            let _ = writeln!(s, "Constraint.valA={:.20}", c.val);
         }
         let fields = [
             ("ptA", c.pt_a, tie),
@@ -760,7 +760,7 @@ impl<'a> Writer<'a> {
         for (name, h, file) in fields {
             let v = map(h, file)?;
             if v != 0 {
-                let _ = write!(s, "Constraint.{name}.v={v:08x}\n");
+                let _ = writeln!(s, "Constraint.{name}.v={v:08x}");
             }
         }
         let (other, other2) = if tie {
@@ -768,9 +768,9 @@ impl<'a> Writer<'a> {
         } else {
             (c.other, c.other2)
         };
-        let _ = write!(
+        let _ = writeln!(
             s,
-            "Constraint.other={}\nConstraint.other2={}\nConstraint.reference={}\n",
+            "Constraint.other={}\nConstraint.other2={}\nConstraint.reference={}",
             u8::from(other),
             u8::from(other2),
             u8::from(c.reference)

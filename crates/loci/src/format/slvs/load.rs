@@ -631,7 +631,7 @@ impl Builder<'_> {
 
     /// For an entity of a linked part: its group's translation parameters, the normal holding
     /// its rotation, and their saved values (the rotation scaled to unit length).
-    fn linked_rotation(&self, h: u32) -> Option<([u32; 3], u32, [f64; 3], Quat<f64>)> {
+    fn linked_rotation(&self, h: u32) -> Option<LinkedMotion> {
         if h & GROUP_BIT == 0 {
             return None;
         }
@@ -642,7 +642,8 @@ impl Builder<'_> {
         let t = self.values(translation)?;
         let [w, x, y, z] = self.values([3, 4, 5, 6].map(|i| base_h | i))?;
         let len = (w * w + x * x + y * y + z * z).sqrt();
-        if !(len > 1e-12) {
+        // A zero (or NaN) quaternion is no rotation.
+        if len.is_nan() || len <= 1e-12 {
             return None;
         }
         let q = Quat {
@@ -651,14 +652,24 @@ impl Builder<'_> {
             y: y / len,
             z: z / len,
         };
-        Some((translation, normal, t, q))
+        Some(LinkedMotion {
+            translation,
+            normal,
+            t,
+            q,
+        })
     }
 
     /// A point of a linked part, saved at `at`: coordinates of its own tied to the base point
     /// of the linked file, recovered from the saved values as `q* (at - t) q`. `None` outside
     /// a modelled linked part (the caller holds it where it was saved).
     fn moved_point(&mut self, h: u32, at: [f64; 3]) -> Option<Entity> {
-        let (translation, normal, t, q) = self.linked_rotation(h)?;
+        let LinkedMotion {
+            translation,
+            normal,
+            t,
+            q,
+        } = self.linked_rotation(h)?;
         let d = crate::geom::Vec3::new(at[0] - t[0], at[1] - t[1], at[2] - t[2]);
         // The inverse rotation of d: its components along the rotated axes.
         let base = [d.dot(q.u()), d.dot(q.v()), d.dot(q.n())];
@@ -681,7 +692,7 @@ impl Builder<'_> {
     /// A normal of a linked part, saved as `at`: a quaternion of its own tied to the linked
     /// file's orientation, recovered as `q* at`.
     fn rotated_normal(&mut self, h: u32, at: [f64; 4]) -> Option<Entity> {
-        let (_, normal, _, q) = self.linked_rotation(h)?;
+        let LinkedMotion { normal, q, .. } = self.linked_rotation(h)?;
         let a = Quat {
             w: at[0],
             x: at[1],
@@ -919,6 +930,15 @@ impl Builder<'_> {
         }
         Ok(())
     }
+}
+
+/// A linked part's motion: its translation parameters, the normal loci made over its
+/// rotation, and their saved values (the rotation scaled to unit length).
+struct LinkedMotion {
+    translation: [u32; 3],
+    normal: u32,
+    t: [f64; 3],
+    q: Quat<f64>,
 }
 
 /// SolveSpace's entity type of a translated point.
