@@ -64,9 +64,10 @@ impl Locals {
 /// Resolves entity handles into slot-based references.
 pub(crate) struct Resolver<'a> {
     pub sys: &'a System,
-    /// Workplanes already resolved: their origin and quaternion parameters (positions in
-    /// [`System::params`]). Every 2D point refers to its workplane, so this is hot.
-    frames: std::cell::RefCell<rustc_hash::FxHashMap<EntityId, [u32; 7]>>,
+    /// Workplanes already resolved, by entity position: their origin and quaternion parameters
+    /// (positions in [`System::params`]), or `None`. Every 2D point refers to its workplane, so
+    /// this is hot.
+    frames: std::cell::RefCell<Vec<Option<[u32; 7]>>>,
 }
 
 impl<'a> Resolver<'a> {
@@ -77,8 +78,8 @@ impl<'a> Resolver<'a> {
         }
     }
 
-    fn cached_frame(&self, h: EntityId, l: &mut Locals) -> Option<Frame> {
-        let g = *self.frames.borrow().get(&h)?;
+    fn cached_frame(&self, h: EntityId, index: usize, l: &mut Locals) -> Option<Frame> {
+        let g = (*self.frames.borrow().get(index)?)?;
         let mut s = [0; 7];
         for (o, p) in s.iter_mut().zip(g) {
             *o = l.slot(p as usize);
@@ -88,6 +89,18 @@ impl<'a> Resolver<'a> {
             origin: [s[0], s[1], s[2]],
             q: [s[3], s[4], s[5], s[6]],
         })
+    }
+
+    fn remember_frame(&self, index: usize, f: &Frame, l: &Locals) {
+        let mut g = [0u32; 7];
+        for (o, &s) in g.iter_mut().zip(f.origin.iter().chain(&f.q)) {
+            *o = l.params[s as usize];
+        }
+        let mut frames = self.frames.borrow_mut();
+        if frames.len() <= index {
+            frames.resize(self.sys.entities().len().max(index + 1), None);
+        }
+        frames[index] = Some(g);
     }
 
     fn param(
@@ -143,10 +156,14 @@ impl<'a> Resolver<'a> {
         if depth > 4 {
             return Err(ModelError::Cycle { entity: h });
         }
-        if let Some(f) = self.cached_frame(h, l) {
+        let index = self
+            .sys
+            .entity_index(h)
+            .ok_or_else(|| Self::dangling(owner, h))?;
+        if let Some(f) = self.cached_frame(h, index, l) {
             return Ok(Ent::Workplane(f));
         }
-        let e = self.sys.entity(h).ok_or_else(|| Self::dangling(owner, h))?;
+        let e = &self.sys.entities()[index];
         let me = ObjectId::Entity(h);
         let sub = |l: &mut Locals, r: EntityId| self.entity_depth(me, r, l, depth + 1);
         let point = |l: &mut Locals, r: EntityId| -> Result<PointRef, ModelError> {
@@ -197,11 +214,13 @@ impl<'a> Resolver<'a> {
                     Ent::Normal(q) => q,
                     _ => return Err(self.wrong(me, *normal, "a normal")),
                 };
-                Ent::Workplane(Frame {
+                let f = Frame {
                     id: h,
                     origin: o,
                     q,
-                })
+                };
+                self.remember_frame(index, &f, l);
+                Ent::Workplane(f)
             }
             EntityKind::LineSegment { points } => {
                 Ent::Line([point(l, points[0])?, point(l, points[1])?])

@@ -3,6 +3,7 @@
 mod constraint;
 mod entity;
 mod handle;
+mod index;
 mod param;
 mod system;
 mod validate;

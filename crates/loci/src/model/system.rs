@@ -1,8 +1,8 @@
 //! The system: every parameter, entity and constraint, looked up by handle.
 
+use super::index::HandleIndex;
 use super::{Constraint, ConstraintId, Entity, EntityId, ObjectId, Param, ParamId};
 use crate::error::ModelError;
-use rustc_hash::FxHashMap as HashMap;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
 /// A whole problem: parameters, entities and constraints, kept in the order they were added.
@@ -14,9 +14,9 @@ pub struct System {
     params: Vec<Param>,
     entities: Vec<Entity>,
     constraints: Vec<Constraint>,
-    param_ix: HashMap<ParamId, usize>,
-    entity_ix: HashMap<EntityId, usize>,
-    constraint_ix: HashMap<ConstraintId, usize>,
+    param_ix: HandleIndex,
+    entity_ix: HandleIndex,
+    constraint_ix: HandleIndex,
 }
 
 impl System {
@@ -37,7 +37,7 @@ impl System {
                 index: self.params.len(),
             });
         }
-        if self.param_ix.contains_key(&p.h) {
+        if self.param_ix.contains(p.h.0) {
             return Err(ModelError::DuplicateHandle {
                 object: ObjectId::Param(p.h),
             });
@@ -49,7 +49,7 @@ impl System {
                 value: p.val,
             });
         }
-        self.param_ix.insert(p.h, self.params.len());
+        self.param_ix.insert(p.h.0, self.params.len());
         self.params.push(p);
         Ok(p.h)
     }
@@ -65,13 +65,13 @@ impl System {
                 index: self.entities.len(),
             });
         }
-        if self.entity_ix.contains_key(&e.h) {
+        if self.entity_ix.contains(e.h.0) {
             return Err(ModelError::DuplicateHandle {
                 object: ObjectId::Entity(e.h),
             });
         }
         let h = e.h;
-        self.entity_ix.insert(h, self.entities.len());
+        self.entity_ix.insert(h.0, self.entities.len());
         self.entities.push(e);
         Ok(h)
     }
@@ -87,7 +87,7 @@ impl System {
                 index: self.constraints.len(),
             });
         }
-        if self.constraint_ix.contains_key(&c.h) {
+        if self.constraint_ix.contains(c.h.0) {
             return Err(ModelError::DuplicateHandle {
                 object: ObjectId::Constraint(c.h),
             });
@@ -100,20 +100,17 @@ impl System {
             });
         }
         let h = c.h;
-        self.constraint_ix.insert(h, self.constraints.len());
+        self.constraint_ix.insert(h.0, self.constraints.len());
         self.constraints.push(c);
         Ok(h)
     }
 
     /// Removes a constraint; returns it if it was there.
     pub fn remove_constraint(&mut self, h: ConstraintId) -> Option<Constraint> {
-        let i = self.constraint_ix.remove(&h)?;
+        let i = self.constraint_ix.remove(h.0)?;
         let c = self.constraints.remove(i);
-        for v in self.constraint_ix.values_mut() {
-            if *v > i {
-                *v -= 1;
-            }
-        }
+        self.constraint_ix
+            .update_positions(|v| if v > i { v - 1 } else { v });
         Some(c)
     }
 
@@ -138,31 +135,31 @@ impl System {
     /// The parameter with handle `h`.
     #[must_use]
     pub fn param(&self, h: ParamId) -> Option<&Param> {
-        self.param_ix.get(&h).map(|&i| &self.params[i])
+        self.param_ix.get(h.0).map(|i| &self.params[i])
     }
 
     /// The entity with handle `h`.
     #[must_use]
     pub fn entity(&self, h: EntityId) -> Option<&Entity> {
-        self.entity_ix.get(&h).map(|&i| &self.entities[i])
+        self.entity_ix.get(h.0).map(|i| &self.entities[i])
     }
 
     /// The constraint with handle `h`.
     #[must_use]
     pub fn constraint(&self, h: ConstraintId) -> Option<&Constraint> {
-        self.constraint_ix.get(&h).map(|&i| &self.constraints[i])
+        self.constraint_ix.get(h.0).map(|i| &self.constraints[i])
     }
 
     /// Position of parameter `h` in [`System::params`].
     #[must_use]
     pub fn param_index(&self, h: ParamId) -> Option<usize> {
-        self.param_ix.get(&h).copied()
+        self.param_ix.get(h.0)
     }
 
     /// Position of entity `h` in [`System::entities`].
     #[must_use]
     pub fn entity_index(&self, h: EntityId) -> Option<usize> {
-        self.entity_ix.get(&h).copied()
+        self.entity_ix.get(h.0)
     }
 
     /// The value of parameter `h`.
@@ -173,8 +170,8 @@ impl System {
 
     /// Sets the value of parameter `h`; returns false when there is no such parameter.
     pub fn set_value(&mut self, h: ParamId, val: f64) -> bool {
-        match self.param_ix.get(&h) {
-            Some(&i) => {
+        match self.param_ix.get(h.0) {
+            Some(i) => {
                 self.params[i].val = val;
                 true
             }
@@ -190,8 +187,8 @@ impl System {
     /// Mutable access to a constraint, e.g. to change its value between solves.
     pub fn constraint_mut(&mut self, h: ConstraintId) -> Option<&mut Constraint> {
         self.constraint_ix
-            .get(&h)
-            .map(|&i| &mut self.constraints[i])
+            .get(h.0)
+            .map(|i| &mut self.constraints[i])
     }
 
     /// Builds a system from lists, checking handles as [`System::add_param`] and friends do.
