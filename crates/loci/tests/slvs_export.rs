@@ -131,3 +131,77 @@ fn solvespace_fixtures_go_through_json_and_back_keeping_every_value() {
         }
     }
 }
+
+/// `solvespace-cli`, when SolveSpace is installed (Debian's `solvespace` package).
+fn solvespace_cli() -> Option<PathBuf> {
+    // `version` prints the version (on either stream, depending on the build) and exits
+    // with status 1.
+    let out = std::process::Command::new("solvespace-cli")
+        .arg("version")
+        .output()
+        .ok()?;
+    let text = [out.stdout, out.stderr].concat();
+    String::from_utf8_lossy(&text)
+        .contains("SolveSpace version")
+        .then(|| PathBuf::from("solvespace-cli"))
+}
+
+#[test]
+fn solvespace_opens_the_converted_examples_and_solves_them_as_loci_does() {
+    let Some(cli) = solvespace_cli() else {
+        eprintln!("note: solvespace-cli not installed; SolveSpace's reading not checked");
+        return;
+    };
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("slvs-export");
+    std::fs::create_dir_all(&dir).unwrap();
+    for path in examples() {
+        let name = path.display().to_string();
+        let problem = Problem::from_json(&std::fs::read_to_string(&path).unwrap()).unwrap();
+        let out = export(&problem.system).unwrap();
+        let file = dir.join(format!(
+            "{}.slvs",
+            path.file_stem().unwrap().to_string_lossy()
+        ));
+        std::fs::write(&file, &out.bytes).unwrap();
+        // SolveSpace loads the file, solves every group and saves it again.
+        let run = std::process::Command::new(&cli)
+            .arg("regenerate")
+            .arg(&file)
+            .output()
+            .unwrap();
+        assert!(run.status.success(), "{name}: {run:?}");
+        let saved = SlvsFile::parse(&std::fs::read(&file).unwrap())
+            .unwrap_or_else(|e| panic!("{name}: SolveSpace's save: {e}"));
+        let req = problem.request();
+        let mut sys: System = problem.system.clone();
+        let rep = loci::solve(&mut sys, req.group, &req.dragged, &req.config()).unwrap();
+        if !rep.outcome.is_ok() {
+            continue;
+        }
+        // SolveSpace's answer is one of loci's: solving from it moves nothing.
+        let mut again = saved.clone();
+        let results = solve_all(&mut again, &loci::Config::default());
+        assert!(results.iter().all(|r| r.is_ok()), "{name}: {results:?}");
+        for p in saved.file_params() {
+            let (a, b) = (
+                saved.system.value(p).unwrap(),
+                again.system.value(p).unwrap(),
+            );
+            assert!((a - b).abs() < 1e-9 * (1.0 + a.abs()), "{name}: {p} moved");
+        }
+        // Where the answer is unique, it is the one the JSON solve finds; an
+        // under-constrained problem may settle elsewhere along its free directions.
+        if rep.dof > 0 {
+            continue;
+        }
+        for p in sys.params() {
+            let got = saved.system.value(out.params[&p.h]).unwrap();
+            assert!(
+                (got - p.val).abs() < 1e-6 * (1.0 + p.val.abs()),
+                "{name}: {}: SolveSpace {got}, loci {}",
+                p.h,
+                p.val
+            );
+        }
+    }
+}

@@ -19,7 +19,10 @@
 //! are written as free points and normals with their current values; parameters no
 //! written entity holds (such a copy's translation, a distance no circle uses) are written as
 //! the coordinates of datum points of their group, so their values survive but nothing ties
-//! them; and the choice of branch `same_orientation` makes, which allows quarter turns.
+//! them; faces (SolveSpace makes them only for solids), so `pt_on_face` and
+//! `pt_face_distance` are written as `pt_in_plane` and `pt_plane_distance`, whose equations
+//! are the same; and the choice of branch `same_orientation` makes, which allows quarter
+//! turns.
 
 use super::codes::GroupKind;
 use super::records::MAGIC;
@@ -84,6 +87,17 @@ fn constraint_code(kind: ConstraintKind) -> i64 {
     (0..=1000)
         .find(|&c| super::codes::constraint(c) == Some(super::codes::ConstraintCode::Kind(kind)))
         .unwrap_or(0)
+}
+
+/// The kind written for `kind`. A SolveSpace face comes only from a solid, which the writer
+/// never makes: loci's faces are workplanes, so constraints on faces are written as the same
+/// constraints on planes (their equations are the same).
+fn written_kind(kind: ConstraintKind) -> ConstraintKind {
+    match kind {
+        ConstraintKind::PtOnFace => ConstraintKind::PtInPlane,
+        ConstraintKind::PtFaceDistance => ConstraintKind::PtPlaneDistance,
+        k => k,
+    }
 }
 
 /// One entity record to write.
@@ -739,7 +753,7 @@ impl<'a> Writer<'a> {
         let _ = writeln!(
             s,
             "Constraint.type={}\nConstraint.group.v={:08x}",
-            constraint_code(c.kind),
+            constraint_code(written_kind(c.kind)),
             self.groups.get(&c.group)?.0
         );
         let wp = map(c.workplane, false)?;
