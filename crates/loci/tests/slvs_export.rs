@@ -205,3 +205,80 @@ fn solvespace_opens_the_converted_examples_and_solves_them_as_loci_does() {
         }
     }
 }
+
+#[test]
+fn circles_sharing_a_radius_and_a_normal_are_tied() {
+    use loci::{Constraint, ConstraintKind, Entity, Param};
+    // Two circles in 3D around (0,0,0) and (5,0,0) with one radius entity and one normal;
+    // a diameter of 4 on the first.
+    let mut sys = System::new();
+    for (h, v) in [(1, 0.0), (2, 0.0), (3, 0.0), (4, 5.0), (5, 0.0), (6, 0.0)] {
+        sys.add_param(Param::new(h, 1, v)).unwrap();
+    }
+    for (h, v) in [(7, 1.0), (8, 0.0), (9, 0.0), (10, 0.0), (11, 1.5)] {
+        sys.add_param(Param::new(h, 2, v)).unwrap();
+    }
+    sys.add_entity(Entity::point_3d(100, 1, [1, 2, 3])).unwrap();
+    sys.add_entity(Entity::point_3d(101, 1, [4, 5, 6])).unwrap();
+    sys.add_entity(Entity::normal_3d(102, 2, [7, 8, 9, 10]))
+        .unwrap();
+    sys.add_entity(Entity::distance(103, 2, None, 11)).unwrap();
+    sys.add_entity(Entity::circle(104, 2, None, 100, 102, 103))
+        .unwrap();
+    sys.add_entity(Entity::circle(105, 2, None, 101, 102, 103))
+        .unwrap();
+    sys.add_constraint(
+        Constraint::new(1, 2, ConstraintKind::Diameter)
+            .with_entities([104, 0, 0, 0])
+            .with_val(4.0),
+    )
+    .unwrap();
+    let out = export(&sys).unwrap();
+    let mut file = SlvsFile::parse(&out.bytes).unwrap();
+    let kinds: Vec<ConstraintKind> = file.system.constraints().iter().map(|c| c.kind).collect();
+    for k in [
+        ConstraintKind::Diameter,
+        ConstraintKind::EqualRadius,
+        ConstraintKind::SameOrientation,
+        ConstraintKind::PointsCoincident,
+    ] {
+        assert!(kinds.contains(&k), "{k} in {kinds:?}");
+    }
+    let results = solve_all(&mut file, &loci::Config::default());
+    assert!(results.iter().all(|r| r.is_ok()), "{results:?}");
+    // The shared radius went to the first circle; the second follows it by equal_radius.
+    let r = file.system.value(out.params[&loci::ParamId(11)]).unwrap();
+    assert!((r - 2.0).abs() < 1e-9, "radius {r}");
+    let second: Vec<f64> = file
+        .system
+        .entities()
+        .iter()
+        .filter_map(|e| match e.kind {
+            loci::EntityKind::Distance { param } => file.system.value(param),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(second.len(), 2);
+    assert!(second.iter().all(|v| (v - 2.0).abs() < 1e-9), "{second:?}");
+}
+
+#[test]
+fn more_requests_than_a_file_can_number_is_an_error() {
+    use loci::{Entity, Param};
+    let mut sys = System::new();
+    for h in 1..=3 * 0x4000 {
+        sys.add_param(Param::new(h, 1, 0.0)).unwrap();
+    }
+    for i in 0..0x4000 {
+        sys.add_entity(Entity::point_3d(
+            i + 1,
+            1,
+            [3 * i + 1, 3 * i + 2, 3 * i + 3],
+        ))
+        .unwrap();
+    }
+    match export(&sys) {
+        Err(loci::format::slvs::ExportError::TooLarge { needed }) => assert!(needed > 0x3fff),
+        other => panic!("expected TooLarge, got {:?}", other.map(|e| e.bytes.len())),
+    }
+}

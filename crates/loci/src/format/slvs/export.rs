@@ -41,6 +41,13 @@ pub enum ExportError {
     /// The model is invalid (a dangling reference, a wrong entity type ...).
     #[error("invalid model: {0}")]
     Model(#[from] crate::ModelError),
+    /// More requests than SolveSpace's handles can number (a request's handle is its upper
+    /// 16 bits, below the bits that mark generated and constraint parameters).
+    #[error("the system needs {needed} requests; a .slvs file holds at most {MAX_REQUESTS}")]
+    TooLarge {
+        /// How many the system needs at least.
+        needed: usize,
+    },
     /// An entity SolveSpace has no way to hold in this place.
     #[error("entity {entity}: {why}")]
     Unsupported {
@@ -61,6 +68,10 @@ pub struct Export {
     /// loci's group handle -> the file's group.
     pub groups: BTreeMap<GroupId, GroupId>,
 }
+
+/// The most requests a file can hold: handles from 1 up to where SolveSpace's constraint
+/// parameters (`0x4000_0000 | ...`) begin.
+const MAX_REQUESTS: u32 = 0x3fff;
 
 /// SolveSpace's request types.
 const REQ_WORKPLANE: u32 = 100;
@@ -136,8 +147,8 @@ struct Writer<'a> {
 /// Writes `sys` as a `.slvs` file.
 ///
 /// # Errors
-/// An invalid model, or an entity SolveSpace cannot hold (a normal in 2D whose workplane
-/// nothing draws in, an arc outside a workplane).
+/// An invalid model, an entity SolveSpace cannot hold (an arc outside a workplane, a circle
+/// whose radius is not a distance), or more requests than a file can number.
 pub fn export(sys: &System) -> Result<Export, ExportError> {
     sys.validate()?;
     let mut loci_groups: BTreeSet<GroupId> = sys.params().iter().map(|p| p.group).collect();
@@ -189,7 +200,7 @@ pub fn export(sys: &System) -> Result<Export, ExportError> {
             w.workplane(e, None, Some(e.h))?;
         }
     }
-    w.loose_params();
+    w.loose_params()?;
     for c in sys.constraints() {
         w.constraint(c)?;
     }
@@ -214,7 +225,7 @@ impl<'a> Writer<'a> {
     /// Parameters no written entity holds (a copy's translation, say) become the
     /// coordinates of datum points in 3D of their group, three at a time, so every value
     /// has a place in the file.
-    fn loose_params(&mut self) {
+    fn loose_params(&mut self) -> Result<(), ExportError> {
         let mut loose: BTreeMap<GroupId, Vec<ParamId>> = BTreeMap::new();
         for p in self.sys.params() {
             if !self.map.contains_key(&p.h) {
@@ -223,8 +234,7 @@ impl<'a> Writer<'a> {
         }
         for (g, ps) in loose {
             for chunk in ps.chunks(3) {
-                let r = self.next_request;
-                self.next_request += 1;
+                let r = self.take_request()?;
                 self.requests.push(Req {
                     h: r,
                     kind: REQ_DATUM_POINT,
@@ -242,6 +252,7 @@ impl<'a> Writer<'a> {
                 self.push_ent(r << 16, E_POINT_3D, 0, vec![], 0, 0);
             }
         }
+        Ok(())
     }
 
     /// SolveSpace's three reference planes in group 1: requests 1..3 with their origin at
@@ -294,14 +305,22 @@ impl<'a> Writer<'a> {
             Some(w) => self.workplane_of(w)?,
             None => 0,
         };
-        let r = self.next_request;
-        self.next_request += 1;
+        let r = self.take_request()?;
         self.requests.push(Req {
             h: r,
             kind,
             group: self.group(group),
             workplane,
         });
+        Ok(r)
+    }
+
+    fn take_request(&mut self) -> Result<u32, ExportError> {
+        let r = self.next_request;
+        if r > MAX_REQUESTS {
+            return Err(ExportError::TooLarge { needed: r as usize });
+        }
+        self.next_request += 1;
         Ok(r)
     }
 
