@@ -111,6 +111,16 @@ fn written_kind(kind: ConstraintKind) -> ConstraintKind {
     }
 }
 
+/// A constraint to write, and which of its handles are already the file's.
+enum Queued {
+    /// One of loci's: every handle is loci's.
+    Loci(Constraint),
+    /// A tie the writer adds: `pt_a` / `entity_a` is a file handle, the other side loci's.
+    Tie(Constraint),
+    /// A tie between two file entities, `entity_a` and `entity_b`.
+    File(Constraint),
+}
+
 /// One entity record to write.
 struct Ent {
     h: u32,
@@ -135,7 +145,7 @@ struct Writer<'a> {
     requests: Vec<Req>,
     entities: Vec<Ent>,
     params: Vec<(u32, f64)>,
-    constraints: Vec<Constraint>,
+    constraints: Vec<Queued>,
     /// loci entity -> the file entity that owns it (points, normals, distances,
     /// workplanes, and every request's main entity).
     owner: HashMap<EntityId, u32>,
@@ -393,10 +403,10 @@ impl<'a> Writer<'a> {
         Ok(h)
     }
 
-    /// A tie the writer adds (handle 0): `pt_a` / `entity_a` is already a file handle, the
-    /// other side a loci handle.
+    /// A tie the writer adds: `pt_a` / `entity_a` is already a file handle, the other side
+    /// a loci handle.
     fn ties(&mut self, c: Constraint) {
-        self.constraints.push(c);
+        self.constraints.push(Queued::Tie(c));
     }
 
     fn entity(&self, h: EntityId) -> Result<&'a Entity, ExportError> {
@@ -533,12 +543,11 @@ impl<'a> Writer<'a> {
         if let Some(n) = normal {
             self.normal_3d_at(n, (r, e.group), pt)?;
         }
+        // Only a loci workplane is this file workplane; a normal's carrier is not.
         if origin.is_some() {
             self.owner.insert(e.h, b);
-            self.push_ent(b, E_WORKPLANE, 0, vec![pt], b | 32, 0);
-        } else {
-            self.push_ent(b, E_WORKPLANE, 0, vec![pt], b | 32, 0);
         }
+        self.push_ent(b, E_WORKPLANE, 0, vec![pt], b | 32, 0);
         Ok(())
     }
 
@@ -624,12 +633,7 @@ impl<'a> Writer<'a> {
             Some(&first) => {
                 let c = Constraint::new(0, e.group.0, ConstraintKind::EqualRadius)
                     .with_entities([b, first, 0, 0]);
-                // Both sides are already file handles.
-                self.constraints.push(Constraint {
-                    other: true,
-                    other2: true,
-                    ..c
-                });
+                self.constraints.push(Queued::File(c));
             }
         }
         self.push_ent(d, E_DISTANCE, fw, vec![], 0, 0);
@@ -671,7 +675,7 @@ impl<'a> Writer<'a> {
         for h in c.fields().into_iter().flatten().chain(c.workplane) {
             self.file_entity(h)?;
         }
-        self.constraints.push(c.clone());
+        self.constraints.push(Queued::Loci(c.clone()));
         Ok(())
     }
 
@@ -755,12 +759,13 @@ impl<'a> Writer<'a> {
         s
     }
 
-    /// A constraint's fields. loci's own constraints map every handle; the writer's ties
-    /// (queued with `other2` set and handle 0) hold a file handle in `pt_a` / `entity_a`
-    /// (both sides for `equal_radius`, queued with `other` set too).
-    fn constraint_text(&self, c: &Constraint) -> Option<String> {
-        let tie = c.h.0 == 0;
-        let both_file = tie && c.other;
+    /// A constraint's fields, its loci handles mapped to the file's.
+    fn constraint_text(&self, q: &Queued) -> Option<String> {
+        let (c, tie, both_file) = match q {
+            Queued::Loci(c) => (c, false, false),
+            Queued::Tie(c) => (c, true, false),
+            Queued::File(c) => (c, true, true),
+        };
         let map = |h: Option<EntityId>, file: bool| -> Option<u32> {
             match h {
                 None => Some(0),
