@@ -11,7 +11,7 @@
 //! when it is (within tolerance), the circuit is redundant.
 
 use super::unmerged::{Equations, Linear};
-use crate::solve::gram::Gram;
+use crate::solve::gram::{Columns, Gram};
 use crate::solve::Config;
 
 /// A minimal dependent set of rows.
@@ -36,7 +36,7 @@ impl Rank {
         if eqs.rows == 0 {
             return None;
         }
-        let mut gram = Gram::new(eqs.rows, &eqs.columns)?;
+        let mut gram = Gram::new(eqs.rows, &Columns::from_lists(&eqs.columns))?;
         gram.assemble(&lin.jn);
         if !gram.factor(0.0, cfg.rank_tolerance) {
             return None;

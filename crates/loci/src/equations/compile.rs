@@ -5,15 +5,20 @@ use super::{EqKind, Equation, Owner};
 use crate::error::ModelError;
 use crate::model::{Constraint, ConstraintKind, EntityKind, GroupId, ObjectId, PlaneRule, System};
 
-/// An equation ready for the solver.
-#[derive(Clone, Debug)]
-pub(crate) enum Compiled {
+/// An equation between parameters, removed from the solve by substitution.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Link {
     /// Parameter `a` equals parameter `b` (positions in [`System::params`]).
     Equal { owner: Owner, a: usize, b: usize },
     /// Parameter `p` equals `value`.
     Fix { owner: Owner, p: usize, value: f64 },
-    /// General residuals.
-    Kernel(Kernel),
+}
+
+/// The equations of one group: general residuals, and equalities for substitution.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Compiled {
+    pub kernels: Vec<Kernel>,
+    pub links: Vec<Link>,
 }
 
 /// General residuals over a few parameters.
@@ -40,17 +45,21 @@ pub(crate) fn compile_group(
     sys: &System,
     group: GroupId,
     values: &[f64],
-) -> Result<Vec<Compiled>, ModelError> {
+) -> Result<Compiled, ModelError> {
     let r = Resolver::new(sys);
-    let mut out = Vec::new();
+    let mut out = Compiled::default();
+    let mut kernels = Vec::new();
     let mut x = Vec::new();
-    for c in sys.constraints() {
-        if c.group != group || c.reference {
-            continue;
-        }
+    let mine = sys
+        .constraints()
+        .iter()
+        .filter(|c| c.group == group && !c.reference);
+    out.links.reserve(mine.clone().count());
+    for c in mine {
         compile_constraint(&r, c, values, &mut x, &mut out)?;
     }
-    compile_entities(&r, group, values, &mut x, &mut out)?;
+    compile_entities(&r, group, values, &mut x, &mut kernels)?;
+    out.kernels.append(&mut kernels);
     Ok(out)
 }
 
@@ -60,7 +69,7 @@ fn compile_entities(
     group: GroupId,
     values: &[f64],
     x: &mut Vec<f64>,
-    out: &mut Vec<Compiled>,
+    out: &mut Vec<Kernel>,
 ) -> Result<(), ModelError> {
     for e in r.sys.entities() {
         if e.group != group {
@@ -170,16 +179,10 @@ pub(crate) fn compile_unmerged(
     if !references {
         compile_entities(&r, group, values, &mut x, &mut out)?;
     }
-    Ok(out
-        .into_iter()
-        .filter_map(|c| match c {
-            Compiled::Kernel(k) => Some(k),
-            _ => None,
-        })
-        .collect())
+    Ok(out)
 }
 
-fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec<f64>) -> Compiled {
+fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec<f64>) -> Kernel {
     x.clear();
     x.extend(l.params.iter().map(|&p| values[p as usize]));
     eq.choose(x);
@@ -189,12 +192,12 @@ fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec
         eq.target = [p.x, p.y, p.z];
     }
     let rows = eq.rows(x);
-    Compiled::Kernel(Kernel {
+    Kernel {
         owner,
         locals: l.params,
         eq,
         rows,
-    })
+    }
 }
 
 /// Resolves a constraint without substitution: the equation and its locals.
@@ -274,26 +277,30 @@ fn compile_constraint(
     c: &Constraint,
     values: &[f64],
     x: &mut Vec<f64>,
-    out: &mut Vec<Compiled>,
+    out: &mut Compiled,
 ) -> Result<(), ModelError> {
     let (eq, l) = resolve_constraint(r, c)?;
     let owner = Owner::Constraint(c.h);
     let p = |s: u16| l.params[s as usize] as usize;
     // Native coordinates: the parameters themselves are the coordinates the constraint is
     // written in, so `a = b` equations can be removed by merging parameters.
-    let native = |pt: &PointRef, wp: Option<&Frame>| -> Option<Vec<u16>> {
+    let native = |pt: &PointRef, wp: Option<&Frame>| -> Option<([u16; 3], usize)> {
         match (pt, wp) {
-            (PointRef::P3(s), None) => Some(s.to_vec()),
-            (PointRef::P2 { wp: own, uv }, Some(f)) if own.id == f.id => Some(uv.to_vec()),
+            (PointRef::P3(s), None) => Some((*s, 3)),
+            (PointRef::P2 { wp: own, uv }, Some(f)) if own.id == f.id => {
+                Some(([uv[0], uv[1], 0], 2))
+            }
             _ => None,
         }
     };
     use ConstraintKind as K;
     match c.kind {
         K::PointsCoincident => {
-            if let (Some(a), Some(b)) = (native(eq.pt(0), eq.wp()), native(eq.pt(1), eq.wp())) {
-                for (sa, sb) in a.into_iter().zip(b) {
-                    out.push(Compiled::Equal {
+            if let (Some((a, n)), Some((b, _))) =
+                (native(eq.pt(0), eq.wp()), native(eq.pt(1), eq.wp()))
+            {
+                for (&sa, &sb) in a[..n].iter().zip(&b[..n]) {
+                    out.links.push(Link::Equal {
                         owner,
                         a: p(sa),
                         b: p(sb),
@@ -307,9 +314,9 @@ fn compile_constraint(
                 Some(Ent::Line(line)) => (line[0], line[1]),
                 _ => (*eq.pt(0), *eq.pt(1)),
             };
-            if let (Some(a), Some(b)) = (native(&pa, eq.wp()), native(&pb, eq.wp())) {
+            if let (Some((a, _)), Some((b, _))) = (native(&pa, eq.wp()), native(&pb, eq.wp())) {
                 let i = if c.kind == K::Horizontal { 1 } else { 0 };
-                out.push(Compiled::Equal {
+                out.links.push(Link::Equal {
                     owner,
                     a: p(a[i]),
                     b: p(b[i]),
@@ -318,9 +325,9 @@ fn compile_constraint(
             }
         }
         K::WhereDragged => {
-            if let Some(a) = native(eq.pt(0), eq.wp()) {
-                for s in a {
-                    out.push(Compiled::Fix {
+            if let Some((a, n)) = native(eq.pt(0), eq.wp()) {
+                for &s in &a[..n] {
+                    out.links.push(Link::Fix {
                         owner,
                         p: p(s),
                         value: values[p(s)],
@@ -333,7 +340,7 @@ fn compile_constraint(
             if let (Ent::Circle { radius: ra, .. }, Ent::Circle { radius: rb, .. }) =
                 (eq.ent(0), eq.ent(1))
             {
-                out.push(Compiled::Equal {
+                out.links.push(Link::Equal {
                     owner,
                     a: p(*ra),
                     b: p(*rb),
@@ -343,7 +350,7 @@ fn compile_constraint(
         }
         K::Diameter => {
             if let Ent::Circle { radius, .. } = eq.ent(0) {
-                out.push(Compiled::Fix {
+                out.links.push(Link::Fix {
                     owner,
                     p: p(*radius),
                     value: c.val / 2.0,
@@ -353,6 +360,6 @@ fn compile_constraint(
         }
         _ => {}
     }
-    out.push(kernel(owner, l, eq, values, x));
+    out.kernels.push(kernel(owner, l, eq, values, x));
     Ok(())
 }

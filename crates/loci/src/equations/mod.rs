@@ -14,7 +14,7 @@ mod orientation;
 mod points;
 pub(crate) mod refs;
 
-pub(crate) use compile::{compile_group, compile_unmerged, Compiled, Kernel};
+pub(crate) use compile::{compile_group, compile_unmerged, Kernel, Link};
 use refs::{Ent, Frame, Geo, PointRef};
 
 use crate::geom::{Dual, Scalar};

@@ -45,9 +45,22 @@ pub(crate) enum Ent {
 }
 
 /// The parameters one equation reads, as positions in [`System::params`].
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub(crate) struct Locals {
     pub params: Vec<u32>,
+    /// The workplane resolved last, already in these locals: the points of one constraint
+    /// nearly always share it, and it is seven parameters to look up.
+    last_frame: Option<Frame>,
+}
+
+impl Default for Locals {
+    /// Room for a constraint on two lines in a workplane, so the list is allocated once.
+    fn default() -> Self {
+        Self {
+            params: Vec::with_capacity(16),
+            last_frame: None,
+        }
+    }
 }
 
 impl Locals {
@@ -156,11 +169,15 @@ impl<'a> Resolver<'a> {
         if depth > 4 {
             return Err(ModelError::Cycle { entity: h });
         }
+        if let Some(f) = l.last_frame.filter(|f| f.id == h) {
+            return Ok(Ent::Workplane(f));
+        }
         let index = self
             .sys
             .entity_index(h)
             .ok_or_else(|| Self::dangling(owner, h))?;
         if let Some(f) = self.cached_frame(h, index, l) {
+            l.last_frame = Some(f);
             return Ok(Ent::Workplane(f));
         }
         let e = &self.sys.entities()[index];
@@ -220,6 +237,7 @@ impl<'a> Resolver<'a> {
                     q,
                 };
                 self.remember_frame(index, &f, l);
+                l.last_frame = Some(f);
                 Ent::Workplane(f)
             }
             EntityKind::LineSegment { points } => {

@@ -25,6 +25,44 @@ use super::dense::DenseLdlt;
 /// The value a dropped pivot is replaced by.
 const DROPPED: f64 = 1e150;
 
+/// The nonzeros of a Jacobian, column by column: `(row, index into the Jacobian's values)`,
+/// in one compressed list.
+pub(crate) struct Columns {
+    /// Column `c` is `entries[ptr[c]..ptr[c + 1]]`.
+    pub ptr: Vec<u32>,
+    pub entries: Vec<(u32, u32)>,
+}
+
+impl Columns {
+    /// From one list per column.
+    pub fn from_lists(lists: &[Vec<(u32, u32)>]) -> Self {
+        let mut ptr = Vec::with_capacity(lists.len() + 1);
+        ptr.push(0u32);
+        let mut entries = Vec::new();
+        for l in lists {
+            entries.extend_from_slice(l);
+            ptr.push(entries.len() as u32);
+        }
+        Self { ptr, entries }
+    }
+
+    /// The number of columns.
+    pub fn len(&self) -> usize {
+        self.ptr.len().saturating_sub(1)
+    }
+
+    /// The entries of column `c`.
+    #[inline]
+    pub fn col(&self, c: usize) -> &[(u32, u32)] {
+        &self.entries[self.ptr[c] as usize..self.ptr[c + 1] as usize]
+    }
+
+    /// Every column, in order.
+    pub fn iter(&self) -> impl Iterator<Item = &[(u32, u32)]> + '_ {
+        (0..self.len()).map(|c| self.col(c))
+    }
+}
+
 /// The structure of `G = J Jᵀ`: an upper-triangular CSC pattern, and for every product of two
 /// Jacobian entries the entry of `G` it adds to.
 struct Pattern {
@@ -36,10 +74,10 @@ struct Pattern {
 
 impl Pattern {
     /// From the nonzeros of `J`, given column by column as `(row, index into J's values)`.
-    fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Self {
+    fn new(nrows: usize, columns: &Columns) -> Self {
         // Rows of J with their columns: row i -> [(column, index into J's values)].
         let mut row_ptr = vec![0usize; nrows + 1];
-        for col in columns {
+        for col in columns.iter() {
             for &(r, _) in col {
                 row_ptr[r as usize + 1] += 1;
             }
@@ -67,7 +105,7 @@ impl Pattern {
             touched.clear();
             pending.clear();
             for &(c, b) in &row_entries[row_ptr[i]..row_ptr[i + 1]] {
-                for &(j, a) in &columns[c as usize] {
+                for &(j, a) in columns.col(c as usize) {
                     if j as usize <= i {
                         if slot_of[j as usize] == usize::MAX {
                             slot_of[j as usize] = 0;
@@ -119,30 +157,21 @@ pub(crate) enum Gram {
 impl Gram {
     /// Builds the structure from the nonzeros of `J`, given column by column as lists of
     /// `(row, index into J's values)`.
-    pub fn new(nrows: usize, columns: &[Vec<(u32, u32)>]) -> Option<Self> {
-        let p = Pattern::new(nrows, columns);
+    pub fn new(nrows: usize, columns: &Columns) -> Option<Self> {
         if nrows <= DENSE_MAX {
+            // G[i][j] gathers the products of the entries that rows i and j have in each column.
             let g = DenseLdlt::new(nrows);
-            let mut col_of = vec![0usize; p.row_idx.len()];
-            for c in 0..nrows {
-                for e in p.col_ptr[c]..p.col_ptr[c + 1] {
-                    col_of[e] = c;
+            let mut contrib = Vec::new();
+            for col in columns.iter() {
+                for (k, &(i, a)) in col.iter().enumerate() {
+                    for &(j, b) in &col[..=k] {
+                        contrib.push((g.index(i as usize, j as usize) as u32, a, b));
+                    }
                 }
             }
-            let contrib = p
-                .contrib
-                .iter()
-                .map(|&(e, a, b)| {
-                    (
-                        g.index(p.row_idx[e as usize], col_of[e as usize]) as u32,
-                        a,
-                        b,
-                    )
-                })
-                .collect();
             return Some(Gram::Dense { g, contrib });
         }
-        SparseGram::new(nrows, p).map(Gram::Sparse)
+        SparseGram::new(nrows, Pattern::new(nrows, columns)).map(Gram::Sparse)
     }
 
     /// Computes `G` from the Jacobian values `jv`.

@@ -20,7 +20,7 @@ mod substitute;
 pub use config::Config;
 pub use report::{Outcome, Report};
 
-use crate::equations::{compile_group, Compiled, Owner};
+use crate::equations::{compile_group, Link, Owner};
 use crate::error::SolveError;
 use crate::model::{GroupId, ParamId, System};
 use newton::Component;
@@ -67,7 +67,7 @@ pub(crate) fn solve_core(
 struct Cache {
     /// Counts of params, entities and constraints when the cache was built.
     shape: Option<(usize, usize, usize)>,
-    links: Vec<Compiled>,
+    links: Vec<Link>,
     kernels: Vec<crate::equations::Kernel>,
     components: Vec<Component>,
 }
@@ -174,12 +174,9 @@ fn solve_values(
     let shape = (np, sys.entities().len(), sys.constraints().len());
     if cache.shape != Some(shape) {
         *cache = Cache::default();
-        for c in compile_group(sys, group, &values)? {
-            match c {
-                Compiled::Kernel(k) => cache.kernels.push(k),
-                link => cache.links.push(link),
-            }
-        }
+        let compiled = compile_group(sys, group, &values)?;
+        cache.kernels = compiled.kernels;
+        cache.links = compiled.links;
         cache.shape = Some(shape);
     } else {
         refresh(sys, &values, cache);
@@ -191,20 +188,19 @@ fn solve_values(
     let mut sub = Substitution::new(np);
     for c in &cache.links {
         match *c {
-            Compiled::Equal { owner, a, b } => match (unknown[a], unknown[b]) {
+            Link::Equal { owner, a, b } => match (unknown[a], unknown[b]) {
                 (true, true) => sub.merge(a, b, owner, tol),
                 (true, false) => sub.fix(a, values[b], owner, tol),
                 (false, true) => sub.fix(b, values[a], owner, tol),
                 (false, false) => sub.constant((values[a] - values[b]).abs() <= tol, owner),
             },
-            Compiled::Fix { owner, p, value } => {
+            Link::Fix { owner, p, value } => {
                 if unknown[p] {
                     sub.fix(p, value, owner, tol);
                 } else {
                     sub.constant((values[p] - value).abs() <= tol, owner);
                 }
             }
-            Compiled::Kernel(_) => {}
         }
     }
     // Starting value of each merged set: the mean of its dragged members if any, else of all.
@@ -304,28 +300,29 @@ fn solve_values(
             constant_kernels.push(ki);
         }
     }
-    // Group kernels and columns by component, in order of first appearance.
+    // Group kernels and columns by component, in order of first appearance, as compressed
+    // lists (two allocations, however many components).
     let mut comp_index = vec![u32::MAX; ncols];
-    let mut comps: Vec<(Vec<usize>, Vec<usize>)> = Vec::new();
+    let mut col_comp = vec![0u32; ncols];
+    let mut ncomps = 0usize;
     for c in 0..ncols {
         let r = find(&mut comp_of_col, c as u32) as usize;
         if comp_index[r] == u32::MAX {
-            comp_index[r] = comps.len() as u32;
-            comps.push((Vec::new(), Vec::new()));
+            comp_index[r] = ncomps as u32;
+            ncomps += 1;
         }
-        let ci = comp_index[r] as usize;
-        comps[ci].1.push(c);
+        col_comp[c] = comp_index[r];
     }
-    for (ki, k) in kernels.iter().enumerate() {
-        if let Some(c) = k
-            .locals
-            .iter()
-            .find_map(|&p| col_of_param(p as usize, &col_of_root))
-        {
-            let r = find(&mut comp_of_col, c) as usize;
-            comps[comp_index[r] as usize].0.push(ki);
-        }
-    }
+    let kernel_comp: Vec<u32> = kernels
+        .iter()
+        .map(|k| {
+            k.locals
+                .iter()
+                .find_map(|&p| col_of_param(p as usize, &col_of_root))
+                .map_or(u32::MAX, |c| col_comp[c as usize])
+        })
+        .collect();
+    let comps = Groups::new(ncomps, &col_comp, &kernel_comp);
 
     // 4. Newton per component.
     let mut report = Report {
@@ -337,7 +334,7 @@ fn solve_values(
         residual: 0.0,
         unknowns: n_unknown - sub.removed,
         equations: kernels.iter().map(|k| k.rows).sum(),
-        components: comps.len(),
+        components: ncomps,
     };
     let mut rank_total = 0usize;
     let mut redundant: Vec<Owner> = Vec::new();
@@ -348,11 +345,12 @@ fn solve_values(
     // cost stays linear in the number of components.
     let mut local = vec![u32::MAX; ncols];
     let mut scratch = newton::Scratch::default();
-    let reuse = cache.components.len() == comps.len();
+    let reuse = cache.components.len() == ncomps;
     if !reuse {
         cache.components.clear();
     }
-    for (ci, (members, cols)) in comps.iter().enumerate() {
+    for ci in 0..ncomps {
+        let (members, cols) = (comps.members(ci), comps.cols(ci));
         for (i, &c) in cols.iter().enumerate() {
             local[c] = i as u32;
         }
@@ -465,6 +463,54 @@ fn solve_values(
     Ok((report, out))
 }
 
+/// Columns and kernels grouped by component: component `i` has columns
+/// `cols[col_ptr[i]..col_ptr[i + 1]]` and kernels `members[member_ptr[i]..member_ptr[i + 1]]`,
+/// each in ascending order.
+struct Groups {
+    col_ptr: Vec<usize>,
+    cols: Vec<usize>,
+    member_ptr: Vec<usize>,
+    members: Vec<usize>,
+}
+
+impl Groups {
+    /// From the component of each column and of each kernel (`u32::MAX`: none).
+    fn new(n: usize, col_comp: &[u32], kernel_comp: &[u32]) -> Self {
+        let bucket = |of: &[u32]| -> (Vec<usize>, Vec<usize>) {
+            let mut ptr = vec![0usize; n + 1];
+            for &c in of.iter().filter(|&&c| c != u32::MAX) {
+                ptr[c as usize + 1] += 1;
+            }
+            for i in 0..n {
+                ptr[i + 1] += ptr[i];
+            }
+            let mut fill = ptr.clone();
+            let mut items = vec![0usize; ptr[n]];
+            for (i, &c) in of.iter().enumerate().filter(|x| *x.1 != u32::MAX) {
+                items[fill[c as usize]] = i;
+                fill[c as usize] += 1;
+            }
+            (ptr, items)
+        };
+        let (col_ptr, cols) = bucket(col_comp);
+        let (member_ptr, members) = bucket(kernel_comp);
+        Self {
+            col_ptr,
+            cols,
+            member_ptr,
+            members,
+        }
+    }
+
+    fn cols(&self, i: usize) -> &[usize] {
+        &self.cols[self.col_ptr[i]..self.col_ptr[i + 1]]
+    }
+
+    fn members(&self, i: usize) -> &[usize] {
+        &self.members[self.member_ptr[i]..self.member_ptr[i + 1]]
+    }
+}
+
 /// Brings cached equations up to date with the system's current values: constraint values,
 /// and the values that `where_dragged` and circle diameters fix parameters at.
 fn refresh(sys: &System, values: &[f64], cache: &mut Cache) {
@@ -476,7 +522,7 @@ fn refresh(sys: &System, values: &[f64], cache: &mut Cache) {
         }
     }
     for l in &mut cache.links {
-        if let Compiled::Fix {
+        if let Link::Fix {
             owner: Owner::Constraint(h),
             p,
             value,

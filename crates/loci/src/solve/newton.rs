@@ -1,25 +1,29 @@
 //! Least-squares Newton on one component: minimum-norm steps through the normal equations,
 //! with a backtracking line search as the safety net.
 
-use super::gram::Gram;
+use super::gram::{Columns, Gram};
 use super::Config;
 use crate::equations::Kernel;
 use crate::equations::Rows;
 
-/// One kernel's place in the component's Jacobian.
+/// One kernel's place in the component's Jacobian. Its lists live in the component's flat
+/// arrays (one allocation per component, not four per kernel).
 pub(crate) struct Block {
     pub kernel: usize,
     /// First row of the kernel in the component.
     pub row0: usize,
     /// First Jacobian value of the kernel's dense block (rows x cols, row-major).
     pub jv0: usize,
-    /// The component columns this kernel touches.
-    pub cols: Vec<u32>,
-    /// For each local slot: its position in `cols`, or -1 for a constant.
-    pub slot_col: Vec<i32>,
-    /// The slots that are unknowns, and the position in `cols` of each.
-    pub active: Vec<u16>,
-    pub active_col: Vec<u32>,
+    /// The component columns this kernel touches: `Component::block_cols[cols0..cols0 + ncols]`.
+    cols0: u32,
+    ncols: u32,
+    /// For each local slot, its position among the block's columns or -1 for a constant:
+    /// `Component::slot_col[slot0..slot0 + locals]`.
+    slot0: u32,
+    /// The slots that are unknowns, and the position among the block's columns of each:
+    /// `Component::active[active0..active0 + nactive]` (and `active_col` alike).
+    active0: u32,
+    nactive: u32,
 }
 
 /// How one component ended.
@@ -61,8 +65,12 @@ pub(crate) struct Component {
     pub row_block: Vec<(u32, u8)>,
     /// Scale of each column (dragged parameters are smaller).
     pub scale: Vec<f64>,
+    block_cols: Vec<u32>,
+    slot_col: Vec<i32>,
+    active: Vec<u16>,
+    active_col: Vec<u32>,
     /// Per column: (row, index into Jacobian values).
-    pub columns: Vec<Vec<(u32, u32)>>,
+    pub columns: Columns,
     pub nnz: usize,
     pub gram: Option<Gram>,
 }
@@ -76,60 +84,87 @@ impl Component {
         scale: Vec<f64>,
     ) -> Self {
         let mut blocks = Vec::with_capacity(members.len());
-        let mut columns: Vec<Vec<(u32, u32)>> = vec![Vec::new(); ncols];
+        let nslots: usize = members.iter().map(|&k| kernels[k].locals.len()).sum();
+        let mut block_cols: Vec<u32> = Vec::with_capacity(nslots);
+        let mut slot_col: Vec<i32> = Vec::with_capacity(nslots);
+        let mut active: Vec<u16> = Vec::with_capacity(nslots);
+        let mut active_col: Vec<u32> = Vec::with_capacity(nslots);
         let mut row_block = Vec::new();
+        let mut counts = vec![0u32; ncols + 1];
         let (mut row, mut jv) = (0usize, 0usize);
         for (bi, &k) in members.iter().enumerate() {
             let kern = &kernels[k];
-            let mut cols: Vec<u32> = Vec::new();
-            let mut slot_col = Vec::with_capacity(kern.locals.len());
-            for &p in &kern.locals {
+            let cols0 = block_cols.len();
+            let slot0 = slot_col.len();
+            let active0 = active.len();
+            for (s, &p) in kern.locals.iter().enumerate() {
                 match col_of_param(p as usize) {
                     Some(c) => {
-                        let pos = match cols.iter().position(|&x| x == c) {
+                        let pos = match block_cols[cols0..].iter().position(|&x| x == c) {
                             Some(i) => i,
                             None => {
-                                cols.push(c);
-                                cols.len() - 1
+                                block_cols.push(c);
+                                block_cols.len() - 1 - cols0
                             }
                         };
                         slot_col.push(pos as i32);
+                        active.push(s as u16);
+                        active_col.push(pos as u32);
                     }
                     None => slot_col.push(-1),
                 }
             }
+            let n = block_cols.len() - cols0;
+            for &c in &block_cols[cols0..] {
+                counts[c as usize + 1] += kern.rows as u32;
+            }
             for r in 0..kern.rows {
-                for (ci, &c) in cols.iter().enumerate() {
-                    columns[c as usize].push(((row + r) as u32, (jv + r * cols.len() + ci) as u32));
-                }
                 row_block.push((bi as u32, r as u8));
             }
-            let n = cols.len();
-            let active: Vec<u16> = (0..slot_col.len() as u16)
-                .filter(|&s| slot_col[s as usize] >= 0)
-                .collect();
-            let active_col = active
-                .iter()
-                .map(|&s| slot_col[s as usize] as u32)
-                .collect();
             blocks.push(Block {
                 kernel: k,
                 row0: row,
                 jv0: jv,
-                cols,
-                slot_col,
-                active,
-                active_col,
+                cols0: cols0 as u32,
+                ncols: n as u32,
+                slot0: slot0 as u32,
+                active0: active0 as u32,
+                nactive: (active.len() - active0) as u32,
             });
             row += kern.rows;
             jv += kern.rows * n;
+        }
+        // Columns as compressed lists: every (row, Jacobian entry) of each column.
+        for c in 0..ncols {
+            counts[c + 1] += counts[c];
+        }
+        let mut fill = counts.clone();
+        let mut entries = vec![(0u32, 0u32); jv];
+        for b in &blocks {
+            let rows = kernels[b.kernel].rows;
+            let cols = &block_cols[b.cols0 as usize..(b.cols0 + b.ncols) as usize];
+            for r in 0..rows {
+                for (ci, &c) in cols.iter().enumerate() {
+                    let f = &mut fill[c as usize];
+                    entries[*f as usize] =
+                        ((b.row0 + r) as u32, (b.jv0 + r * cols.len() + ci) as u32);
+                    *f += 1;
+                }
+            }
         }
         Self {
             blocks,
             rows: row,
             row_block,
             scale,
-            columns,
+            block_cols,
+            slot_col,
+            active,
+            active_col,
+            columns: Columns {
+                ptr: counts,
+                entries,
+            },
             nnz: jv,
             gram: None,
         }
@@ -137,10 +172,11 @@ impl Component {
 
     fn gather(&self, b: &Block, kern: &Kernel, x: &[f64], values: &[f64], xs: &mut Vec<f64>) {
         xs.clear();
-        for (s, &p) in kern.locals.iter().enumerate() {
-            let c = b.slot_col[s];
+        let cols = &self.block_cols[b.cols0 as usize..];
+        let slots = &self.slot_col[b.slot0 as usize..b.slot0 as usize + kern.locals.len()];
+        for (&c, &p) in slots.iter().zip(&kern.locals) {
             xs.push(if c >= 0 {
-                x[b.cols[c as usize] as usize]
+                x[cols[c as usize] as usize]
             } else {
                 values[p as usize]
             });
@@ -179,16 +215,18 @@ impl Component {
         for b in &self.blocks {
             let k = &kernels[b.kernel];
             self.gather(b, k, x, values, xs);
-            let na = b.active.len();
+            let na = b.nactive as usize;
+            let active = &self.active[b.active0 as usize..b.active0 as usize + na];
+            let active_col = &self.active_col[b.active0 as usize..b.active0 as usize + na];
             jl.clear();
             jl.resize(k.rows * na, 0.0);
-            k.eq.jacobian_active(xs, &b.active, &mut r[b.row0..b.row0 + k.rows], jl);
-            let w = b.cols.len();
+            k.eq.jacobian_active(xs, active, &mut r[b.row0..b.row0 + k.rows], jl);
+            let w = b.ncols as usize;
             let block = &mut jv[b.jv0..b.jv0 + k.rows * w];
             if na == w {
                 // Every unknown appears once: the block is the Jacobian as computed.
                 for row in 0..k.rows {
-                    for (a, &c) in b.active_col.iter().enumerate() {
+                    for (a, &c) in active_col.iter().enumerate() {
                         block[row * w + c as usize] = jl[row * na + a];
                     }
                 }
@@ -196,7 +234,7 @@ impl Component {
                 // Merged parameters: several slots feed one column.
                 block.iter_mut().for_each(|v| *v = 0.0);
                 for row in 0..k.rows {
-                    for (a, &c) in b.active_col.iter().enumerate() {
+                    for (a, &c) in active_col.iter().enumerate() {
                         block[row * w + c as usize] += jl[row * na + a];
                     }
                 }
@@ -288,7 +326,7 @@ impl Component {
             for v in inv.iter_mut() {
                 *v = if *v > 0.0 { 1.0 / v.sqrt() } else { 0.0 };
             }
-            for col in &self.columns {
+            for col in self.columns.iter() {
                 for &(row, idx) in col {
                     jn[idx as usize] *= inv[row as usize];
                 }
@@ -418,15 +456,9 @@ impl Component {
 
 /// The rows that row `k` of the normalised Jacobian is a combination of: solve
 /// `G c = J J_kᵀ`; dropped rows get (almost) nothing, so `c` expresses row `k` in the others.
-fn dependencies(
-    gram: &mut Gram,
-    columns: &[Vec<(u32, u32)>],
-    jn: &[f64],
-    k: usize,
-    m: usize,
-) -> Vec<usize> {
+fn dependencies(gram: &mut Gram, columns: &Columns, jn: &[f64], k: usize, m: usize) -> Vec<usize> {
     let mut b = vec![0.0; m];
-    for col in columns {
+    for col in columns.iter() {
         let Some(&(_, ik)) = col.iter().find(|&&(row, _)| row as usize == k) else {
             continue;
         };

@@ -2,7 +2,7 @@
 //! helpers that compile one constraint (or one entity's implicit condition) the way the solver
 //! does and evaluate it at any parameter values.
 
-use super::super::compile::{compile_group, resolve_constraint, Compiled};
+use super::super::compile::{compile_group, resolve_constraint};
 use super::super::refs::{Geo, Resolver};
 use super::super::{EqKind, Equation, Owner, Rows};
 use crate::geom::{Quat, Vec3};
@@ -533,13 +533,12 @@ pub(super) fn compile_implicit(sys: &System, h: u32) -> One {
     let values: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let compiled = compile_group(sys, e.group, &values).expect("group compiles");
     compiled
+        .kernels
         .into_iter()
-        .find_map(|c| match c {
-            Compiled::Kernel(k) if k.owner == Owner::Entity(EntityId(h)) => Some(One {
-                eq: k.eq,
-                locals: k.locals,
-            }),
-            _ => None,
+        .find(|k| k.owner == Owner::Entity(EntityId(h)))
+        .map(|k| One {
+            eq: k.eq,
+            locals: k.locals,
         })
         .expect("the entity has an implicit condition")
 }
