@@ -174,10 +174,12 @@ pub fn read_points(sp: &SlvsProblem) -> Vec<[f64; 3]> {
 /// The libslvs `SLVS_E_*` number of an entity.
 fn entity_code(k: &EntityKind) -> u32 {
     match k {
-        // libslvs has no translated point; the generated families never make one.
-        EntityKind::PointIn3d { .. } | EntityKind::PointNTrans { .. } => 50000,
+        // libslvs has no translated or moved copies; the generated families never make one.
+        EntityKind::PointIn3d { .. }
+        | EntityKind::PointNTrans { .. }
+        | EntityKind::PointNRotTrans { .. } => 50000,
         EntityKind::PointIn2d { .. } => 50001,
-        EntityKind::NormalIn3d { .. } => 60000,
+        EntityKind::NormalIn3d { .. } | EntityKind::NormalNRot { .. } => 60000,
         EntityKind::NormalIn2d => 60001,
         EntityKind::Distance { .. } => 70000,
         EntityKind::Workplane { .. } => 80000,

@@ -65,12 +65,13 @@ enum Command {
         #[arg(long)]
         all: bool,
     },
-    /// Convert a SolveSpace `.slvs` file to a loci JSON problem.
+    /// Convert a SolveSpace `.slvs` file to a loci JSON problem (`--to json`), or a loci JSON
+    /// problem to a `.slvs` file SolveSpace opens (`--to slvs`).
     Convert {
-        /// The `.slvs` file.
+        /// The `.slvs` or `.json` file.
         file: PathBuf,
-        /// The format to write: `json`.
-        #[arg(long, value_parser = ["json"])]
+        /// The format to write: `json` (from `.slvs`) or `slvs` (from `.json`).
+        #[arg(long, value_parser = ["json", "slvs"])]
         to: String,
         /// Write here instead of standard output.
         #[arg(short, long)]
@@ -181,16 +182,18 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             }
             Ok(check::exit_code(&d))
         }
-        Command::Convert {
-            file,
-            to: _,
-            output,
-        } => {
-            let text = slvs::to_json(&file)?;
+        Command::Convert { file, to, output } => {
+            let bytes = if to == "slvs" {
+                slvs::from_json(&file)?
+            } else {
+                let mut text = slvs::to_json(&file)?;
+                text.push('\n');
+                text.into_bytes()
+            };
             match output {
-                Some(out) => std::fs::write(&out, text)
+                Some(out) => std::fs::write(&out, bytes)
                     .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?,
-                None => outln!("{text}"),
+                None => emit_bytes(&bytes),
             }
             Ok(code::SOLVED)
         }
@@ -213,9 +216,15 @@ pub(crate) fn exit_code(o: loci::Outcome) -> u8 {
 
 /// Writes `s` to standard output, exiting quietly when the reader has gone away.
 pub(crate) fn emit(s: &str) {
+    emit_bytes(s.as_bytes());
+}
+
+/// Writes `b` to standard output (a `.slvs` file starts with bytes that are not UTF-8),
+/// exiting quietly when the reader has gone away.
+pub(crate) fn emit_bytes(b: &[u8]) {
     use std::io::Write;
     let mut o = std::io::stdout().lock();
-    if let Err(e) = o.write_all(s.as_bytes()).and_then(|()| o.flush()) {
+    if let Err(e) = o.write_all(b).and_then(|()| o.flush()) {
         if e.kind() == std::io::ErrorKind::BrokenPipe {
             std::process::exit(0);
         }

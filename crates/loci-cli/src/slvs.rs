@@ -148,3 +148,15 @@ pub(crate) fn to_json(file: &Path) -> anyhow::Result<String> {
     };
     Ok(problem.to_json())
 }
+
+/// `loci convert FILE.json --to slvs`: the problem's system as a `.slvs` file SolveSpace
+/// opens (see [`loci::format::slvs::export`] for what is lost).
+pub(crate) fn from_json(file: &Path) -> anyhow::Result<Vec<u8>> {
+    let text =
+        std::fs::read_to_string(file).with_context(|| format!("cannot read {}", file.display()))?;
+    let problem =
+        Problem::from_json(&text).map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+    let out = loci::format::slvs::export(&problem.system)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+    Ok(out.bytes)
+}

@@ -185,3 +185,47 @@ fn invalid_model_and_missing_file_exit_3() {
     assert_eq!(out.status.code(), Some(3));
     assert!(String::from_utf8_lossy(&out.stderr).contains("does_not_exist.json"));
 }
+
+#[test]
+fn convert_to_slvs_writes_a_file_that_solves_like_the_json() {
+    for p in examples() {
+        let out = scratch(&format!(
+            "{}.slvs",
+            p.file_stem().unwrap().to_string_lossy()
+        ));
+        let o = loci(&[
+            "convert",
+            p.to_str().unwrap(),
+            "--to",
+            "slvs",
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}: {o:?}", p.display());
+        let bytes = std::fs::read(&out).unwrap();
+        assert!(bytes.starts_with(b"\xb1\xb2\xb3SolveSpaceREVa"));
+        // The file solves group by group with the exit code the JSON solve gives.
+        let o = loci(&["solve", out.to_str().unwrap()]);
+        assert_eq!(
+            o.status.code(),
+            Some(expected_code(&p)),
+            "{}: {o:?}",
+            p.display()
+        );
+        // And converts back to JSON.
+        let o = loci(&["convert", out.to_str().unwrap(), "--to", "json"]);
+        assert!(o.status.success(), "{o:?}");
+        let text = String::from_utf8(o.stdout).unwrap();
+        assert!(text.contains("\"line_segment\""), "{text}");
+    }
+}
+
+#[test]
+fn convert_to_slvs_of_a_bad_problem_exits_3() {
+    let bad = scratch("bad-convert.json");
+    std::fs::write(&bad, "{\"params\": [], \"entities\": [{\"h\": 1, \"group\": 1, \"type\": \"line_segment\", \"points\": [7, 8]}], \"constraints\": []}").unwrap();
+    let o = loci(&["convert", bad.to_str().unwrap(), "--to", "slvs"]);
+    assert_eq!(o.status.code(), Some(3), "{o:?}");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("bad-convert.json"), "{err}");
+}

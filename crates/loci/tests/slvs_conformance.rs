@@ -7,22 +7,8 @@
 use loci::format::slvs::conformance::{check, seed_for, FixtureCheck, Summary, Verdict};
 use std::path::{Path, PathBuf};
 
-/// Files that cannot match, and why. Everything else under `constraint/` and `request/`
-/// must match.
-const KNOWN: &[(&str, &str)] = &[
-    // The saved radius is negative, so the saved points cannot lie on the circle under
-    // SolveSpace's own equation (sqrt(du^2 + dv^2) = r); SolveSpace's test only checks that
-    // loading makes the radius positive, which loci's solve does too.
-    (
-        "constraint/pt_on_circle/negative_dia.slvs",
-        "saved values are not a solution",
-    ),
-    // A linked part: loci does not model linked groups.
-    ("request/image/linked.slvs", "linked group"),
-];
-
-/// The number of fixtures that match in every group today; it may only go up.
-const MATCHED: usize = 231;
+/// The number of fixtures that match in every group today: all of them.
+const MATCHED: usize = 236;
 
 fn fixtures() -> Option<PathBuf> {
     if let Some(p) = std::env::var_os("LOCI_SOLVESPACE_FIXTURES") {
@@ -81,11 +67,7 @@ fn solvespace_fixtures_do_not_regress() {
     );
     for (name, r) in &results {
         assert!(r.verdict.loaded(), "{name} does not load: {:?}", r.verdict);
-        let must_match = name.starts_with("constraint/") || name.starts_with("request/");
-        let known = KNOWN.iter().any(|(k, _)| k == name);
-        if must_match && !known {
-            assert_eq!(r.verdict, Verdict::Matched, "{name}");
-        }
+        assert_eq!(r.verdict, Verdict::Matched, "{name}");
     }
     assert!(s.matched >= MATCHED, "matched {} < {MATCHED}", s.matched);
 }

@@ -196,9 +196,15 @@ impl Ctx<'_> {
             }
         };
         match &e.kind {
-            EntityKind::PointIn3d { params } => params.iter().for_each(|&p| push(p, out)),
+            EntityKind::PointIn3d { params }
+            | EntityKind::PointNTrans { params, .. }
+            | EntityKind::PointNRotTrans { params, .. } => {
+                params.iter().for_each(|&p| push(p, out))
+            }
             EntityKind::PointIn2d { params } => params.iter().for_each(|&p| push(p, out)),
-            EntityKind::NormalIn3d { params } => params.iter().for_each(|&p| push(p, out)),
+            EntityKind::NormalIn3d { params } | EntityKind::NormalNRot { params, .. } => {
+                params.iter().for_each(|&p| push(p, out))
+            }
             EntityKind::Distance { param } => push(*param, out),
             EntityKind::NormalIn2d => {
                 if let Some(EntityKind::Workplane { normal, .. }) = e
@@ -259,7 +265,10 @@ impl Ctx<'_> {
         let mut own = Vec::new();
         self.params(h, &mut own, 0);
         match &e.kind {
-            EntityKind::PointIn2d { .. } | EntityKind::PointIn3d { .. } => {
+            EntityKind::PointIn2d { .. }
+            | EntityKind::PointIn3d { .. }
+            | EntityKind::PointNTrans { .. }
+            | EntityKind::PointNRotTrans { .. } => {
                 let b: Vec<Vec<f64>> = span
                     .basis
                     .iter()
@@ -276,7 +285,9 @@ impl Ctx<'_> {
                     _ => vec![Motion::InSpace],
                 }
             }
-            EntityKind::NormalIn3d { .. } | EntityKind::NormalIn2d => {
+            EntityKind::NormalIn3d { .. }
+            | EntityKind::NormalIn2d
+            | EntityKind::NormalNRot { .. } => {
                 if r == 1 && own.len() == 4 {
                     let q: Vec<f64> = own.iter().map(|&p| self.value(p)).collect();
                     let dq = self.embed(&own, params, &span.basis[0]);
@@ -437,7 +448,9 @@ fn parts(kind: &EntityKind) -> Vec<(&'static str, EntityId)> {
 fn full_dof(sys: &System, h: EntityId, unknowns: usize) -> usize {
     match sys.entity(h).map(|e| &e.kind) {
         // A unit quaternion turns three ways.
-        Some(EntityKind::NormalIn3d { .. } | EntityKind::NormalIn2d) => unknowns.min(3),
+        Some(
+            EntityKind::NormalIn3d { .. } | EntityKind::NormalIn2d | EntityKind::NormalNRot { .. },
+        ) => unknowns.min(3),
         _ => unknowns,
     }
 }

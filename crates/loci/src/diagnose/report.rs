@@ -127,8 +127,11 @@ impl fmt::Display for EntityFreedom {
 /// The word for an entity type in sentences.
 pub(crate) fn kind_word(t: EntityType) -> &'static str {
     match t {
-        EntityType::PointIn3d | EntityType::PointIn2d | EntityType::PointNTrans => "point",
-        EntityType::NormalIn3d | EntityType::NormalIn2d => "normal",
+        EntityType::PointIn3d
+        | EntityType::PointIn2d
+        | EntityType::PointNTrans
+        | EntityType::PointNRotTrans => "point",
+        EntityType::NormalIn3d | EntityType::NormalIn2d | EntityType::NormalNRot => "normal",
         EntityType::Distance => "distance",
         EntityType::Workplane => "workplane",
         EntityType::LineSegment => "line",

@@ -83,7 +83,12 @@ pub(super) fn pt_on_circle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S
     };
     let d = g.pos(e.pt(0)).minus(g.pos(center));
     let dn = d.dot(n) / n.norm();
-    out.push((d.dot(d) - dn * dn).sqrt() - radius(ent, g));
+    // SolveSpace writes this as d^2 - r^2, so a circle whose radius parameter went negative
+    // still holds its points at |r| (diameter and equal_radius stay signed, as there).
+    // d - |r| has the same roots and keeps the residual a length.
+    let r = radius(ent, g);
+    let r = if r.val() < 0.0 { -r } else { r };
+    out.push((d.dot(d) - dn * dn).sqrt() - r);
 }
 
 /// Circles or arcs `entity_a` and `entity_b` have equal radius.

@@ -77,6 +77,8 @@ fn compile_entities(
         }
         let me = ObjectId::Entity(e.h);
         let mut l = Locals::default();
+        // The constant a moved copy carries (its base), where the equation reads it.
+        let mut target = [0.0; 3];
         let (kind, ents, val) = match &e.kind {
             EntityKind::NormalIn3d { .. } => (
                 EqKind::UnitQuaternion,
@@ -108,6 +110,25 @@ fn compile_entities(
                     f64::from(*times),
                 )
             }
+            EntityKind::PointNRotTrans {
+                base,
+                translation,
+                rotation,
+                ..
+            } => {
+                let own = r.entity(me, e.h, &mut l)?;
+                let t = PointRef::P3(r.params(e.h, translation, &mut l)?);
+                let q = r.entity(me, *rotation, &mut l)?;
+                target = *base;
+                (EqKind::RotTranslated, vec![own, Ent::Point(t), q], 0.0)
+            }
+            EntityKind::NormalNRot { base, rotation, .. } => {
+                let own = r.entity(me, e.h, &mut l)?;
+                let q = r.entity(me, *rotation, &mut l)?;
+                // The base quaternion: w in `val`, x, y, z in `target`.
+                target = [base[1], base[2], base[3]];
+                (EqKind::Rotated, vec![own, q], base[0])
+            }
             _ => continue,
         };
         // An entity of this group whose parameters all belong to earlier groups (a copy) has
@@ -128,7 +149,7 @@ fn compile_entities(
             other: false,
             other2: false,
             choice: 0,
-            target: [0.0; 3],
+            target,
         };
         out.push(kernel(Owner::Entity(e.h), l, eq, values, x));
     }

@@ -37,6 +37,12 @@ pub(crate) enum EqKind {
     ArcRadii,
     /// A translated point is at its base plus `times` (in `val`) the translation.
     Translated,
+    /// A moved point (`ents[0]`) is at the translation (`ents[1]`) plus its base (in
+    /// `target`) turned by the rotation (`ents[2]`, a normal).
+    RotTranslated,
+    /// A rotated normal (`ents[0]`) is the rotation (`ents[1]`) times its base (w in `val`,
+    /// x, y, z in `target`).
+    Rotated,
 }
 
 /// A constraint resolved against the model, ready to evaluate.
@@ -117,6 +123,8 @@ impl Equation {
             EqKind::UnitQuaternion => return orientation::unit_quaternion(self, &g, out),
             EqKind::ArcRadii => return circles::arc_radii(self, &g, out),
             EqKind::Translated => return points::translated(self, &g, out),
+            EqKind::RotTranslated => return points::rot_translated(self, &g, out),
+            EqKind::Rotated => return orientation::rotated(self, &g, out),
             EqKind::Constraint(k) => k,
         };
         match k {

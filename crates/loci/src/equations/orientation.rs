@@ -13,6 +13,26 @@ pub(super) fn unit_quaternion<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Row
     out.push(g.quat(*q).norm2() - 1.0);
 }
 
+/// A rotated normal (`ents[0]`) is the rotation (`ents[1]`) times its base (w in `val`,
+/// x, y, z in `target`): four rows, w, x, y, z.
+pub(super) fn rotated<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let (Ent::Normal(own), Ent::Normal(q)) = (e.ent(0), e.ent(1)) else {
+        unreachable!("resolved: two normals")
+    };
+    let base = Quat {
+        w: S::cst(e.val),
+        x: S::cst(e.target[0]),
+        y: S::cst(e.target[1]),
+        z: S::cst(e.target[2]),
+    };
+    let want = g.quat(*q).times(base);
+    let own = g.quat(*own);
+    out.push(own.w - want.w);
+    out.push(own.x - want.x);
+    out.push(own.y - want.y);
+    out.push(own.z - want.z);
+}
+
 /// The branch of `same_orientation`: the dominant axis of `entity_a`'s N (which two
 /// components of the cross product to keep, in bits 0-1), and in bit 2 whether U of `a`
 /// is held perpendicular to V of `b` (else to U of `b`), whichever is nearer to holding.

@@ -50,6 +50,26 @@ pub(super) fn translated<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>)
     out.push(d.z);
 }
 
+/// A moved point (`ents[0]`) is at the translation (`ents[1]`, read as a point in 3D) plus
+/// its base (`target`) turned by the rotation quaternion (`ents[2]`): three rows, x, y, z.
+/// `q p q*` is written with the quaternion's rotated axes, `p.x U + p.y V + p.z N`.
+pub(super) fn rot_translated<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
+    let (Ent::Point(p), Ent::Point(t), Ent::Normal(q)) = (e.ent(0), e.ent(1), e.ent(2)) else {
+        unreachable!("resolved: two points and a normal")
+    };
+    let q = g.quat(*q);
+    let [bx, by, bz] = e.target.map(S::cst);
+    let moved = g
+        .pos(t)
+        .plus(q.u().scale(bx))
+        .plus(q.v().scale(by))
+        .plus(q.n().scale(bz));
+    let d = g.pos(p).minus(moved);
+    out.push(d.x);
+    out.push(d.y);
+    out.push(d.z);
+}
+
 /// `pt_a` stays at the position it had when the equations were built.
 pub(super) fn where_dragged<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let p = g.at(e.pt(0), e.wp());

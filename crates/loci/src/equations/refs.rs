@@ -204,9 +204,9 @@ impl<'a> Resolver<'a> {
             EntityKind::PointIn3d { params } => {
                 Ent::Point(PointRef::P3(self.params(h, params, l)?))
             }
-            // A translated point has coordinates of its own; its tie to the base is an
-            // implicit equation of its group, so everywhere else it is a point in 3D.
-            EntityKind::PointNTrans { params, .. } => {
+            // A translated (or moved) point has coordinates of its own; its tie to the base
+            // is an implicit equation of its group, so everywhere else it is a point in 3D.
+            EntityKind::PointNTrans { params, .. } | EntityKind::PointNRotTrans { params, .. } => {
                 Ent::Point(PointRef::P3(self.params(h, params, l)?))
             }
             EntityKind::PointIn2d { params } => {
@@ -216,7 +216,10 @@ impl<'a> Resolver<'a> {
                     uv: self.params(h, params, l)?,
                 })
             }
-            EntityKind::NormalIn3d { params } => Ent::Normal(self.params(h, params, l)?),
+            // Likewise a rotated normal has a quaternion of its own.
+            EntityKind::NormalIn3d { params } | EntityKind::NormalNRot { params, .. } => {
+                Ent::Normal(self.params(h, params, l)?)
+            }
             EntityKind::NormalIn2d => Ent::Normal(frame_of(l)?.q),
             EntityKind::Distance { param } => Ent::Distance(self.param(h, *param, l)?),
             EntityKind::Workplane { origin, normal } => {

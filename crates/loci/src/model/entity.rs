@@ -51,6 +51,35 @@ pub enum EntityKind {
         /// How many times the translation is applied (negative for the other side).
         times: i32,
     },
+    /// A point in 3D held at a constant point carried by a rigid motion: its own
+    /// coordinates x, y, z, with the implicit condition `(x, y, z) = translation + q base q*`
+    /// where `q` is the quaternion of the normal `rotation`. SolveSpace's linked parts make
+    /// these: the imported file's points, placed by the linking group's translation and
+    /// rotation (its unknowns).
+    #[serde(rename = "point_n_rot_trans")]
+    PointNRotTrans {
+        /// x, y, z.
+        params: [ParamId; 3],
+        /// The point before the motion (a constant).
+        base: [f64; 3],
+        /// The translation vector's x, y, z.
+        translation: [ParamId; 3],
+        /// A `normal_in_3d` whose quaternion is the rotation; its own implicit unit length
+        /// keeps it a rotation.
+        rotation: EntityId,
+    },
+    /// An orientation in 3D held at a constant orientation turned by a rotation: its own
+    /// quaternion w, x, y, z, with the implicit condition `(w, x, y, z) = q * base` where `q`
+    /// is the quaternion of the normal `rotation`. The normals of SolveSpace's linked parts.
+    #[serde(rename = "normal_n_rot")]
+    NormalNRot {
+        /// w, x, y, z.
+        params: [ParamId; 4],
+        /// The orientation before the rotation (a constant unit quaternion w, x, y, z).
+        base: [f64; 4],
+        /// A `normal_in_3d` whose quaternion is the rotation.
+        rotation: EntityId,
+    },
     /// An orientation in 3D as a unit quaternion w, x, y, z (with the implicit `|q| = 1`).
     #[serde(rename = "normal_in_3d")]
     NormalIn3d {
@@ -116,6 +145,10 @@ pub enum EntityType {
     PointIn2d,
     #[serde(rename = "point_n_trans")]
     PointNTrans,
+    #[serde(rename = "point_n_rot_trans")]
+    PointNRotTrans,
+    #[serde(rename = "normal_n_rot")]
+    NormalNRot,
     #[serde(rename = "normal_in_3d")]
     NormalIn3d,
     #[serde(rename = "normal_in_2d")]
@@ -136,6 +169,8 @@ impl EntityType {
             EntityType::PointIn3d => "point_in_3d",
             EntityType::PointIn2d => "point_in_2d",
             EntityType::PointNTrans => "point_n_trans",
+            EntityType::PointNRotTrans => "point_n_rot_trans",
+            EntityType::NormalNRot => "normal_n_rot",
             EntityType::NormalIn3d => "normal_in_3d",
             EntityType::NormalIn2d => "normal_in_2d",
             EntityType::Distance => "distance",
@@ -152,21 +187,34 @@ impl EntityType {
     pub fn is_point(self) -> bool {
         matches!(
             self,
-            EntityType::PointIn3d | EntityType::PointIn2d | EntityType::PointNTrans
+            EntityType::PointIn3d
+                | EntityType::PointIn2d
+                | EntityType::PointNTrans
+                | EntityType::PointNRotTrans
         )
     }
 
     /// Whether this is a point with three coordinates of its own (a point in 3D or a
-    /// translated point), as a workplane's origin must be.
+    /// moved copy of one), as a workplane's origin must be.
     #[must_use]
     pub fn is_point_3d(self) -> bool {
-        matches!(self, EntityType::PointIn3d | EntityType::PointNTrans)
+        matches!(
+            self,
+            EntityType::PointIn3d | EntityType::PointNTrans | EntityType::PointNRotTrans
+        )
     }
 
     /// Whether this is a normal.
     #[must_use]
     pub fn is_normal(self) -> bool {
-        matches!(self, EntityType::NormalIn3d | EntityType::NormalIn2d)
+        self.is_normal_3d() || self == EntityType::NormalIn2d
+    }
+
+    /// Whether this is a normal with a quaternion of its own (in 3D or a rotated copy), as
+    /// a workplane's normal must be.
+    #[must_use]
+    pub fn is_normal_3d(self) -> bool {
+        matches!(self, EntityType::NormalIn3d | EntityType::NormalNRot)
     }
 }
 
@@ -184,6 +232,8 @@ impl EntityKind {
             EntityKind::PointIn3d { .. } => EntityType::PointIn3d,
             EntityKind::PointIn2d { .. } => EntityType::PointIn2d,
             EntityKind::PointNTrans { .. } => EntityType::PointNTrans,
+            EntityKind::PointNRotTrans { .. } => EntityType::PointNRotTrans,
+            EntityKind::NormalNRot { .. } => EntityType::NormalNRot,
             EntityKind::NormalIn3d { .. } => EntityType::NormalIn3d,
             EntityKind::NormalIn2d => EntityType::NormalIn2d,
             EntityKind::Distance { .. } => EntityType::Distance,
@@ -202,17 +252,20 @@ impl EntityKind {
             EntityKind::PointIn3d { params } => params,
             EntityKind::PointIn2d { params } => params,
             EntityKind::PointNTrans { params, .. } => params,
+            EntityKind::PointNRotTrans { params, .. } => params,
             EntityKind::NormalIn3d { params } => params,
+            EntityKind::NormalNRot { params, .. } => params,
             EntityKind::Distance { param } => std::slice::from_ref(param),
             _ => &[],
         }
     }
 
-    /// Parameters this entity reads besides its own: a translated point's translation.
+    /// Parameters this entity reads besides its own: a moved point's translation.
     #[must_use]
     pub fn read_params(&self) -> &[ParamId] {
         match self {
-            EntityKind::PointNTrans { translation, .. } => translation,
+            EntityKind::PointNTrans { translation, .. }
+            | EntityKind::PointNRotTrans { translation, .. } => translation,
             _ => &[],
         }
     }
@@ -222,6 +275,10 @@ impl EntityKind {
     pub fn references(&self) -> Vec<(&'static str, EntityId)> {
         match self {
             EntityKind::PointNTrans { base, .. } => vec![("base", *base)],
+            EntityKind::PointNRotTrans { rotation, .. }
+            | EntityKind::NormalNRot { rotation, .. } => {
+                vec![("rotation", *rotation)]
+            }
             EntityKind::Workplane { origin, normal } => {
                 vec![("origin", *origin), ("normal", *normal)]
             }
@@ -302,6 +359,52 @@ impl Entity {
                 base: EntityId(base),
                 translation: translation.map(ParamId),
                 times,
+            },
+        )
+    }
+
+    /// A 3D point with coordinates `params`, held at `translation + q base q*` where `q`
+    /// is the quaternion of normal `rotation`.
+    #[must_use]
+    pub fn point_n_rot_trans(
+        h: u32,
+        group: u32,
+        params: [u32; 3],
+        base: [f64; 3],
+        translation: [u32; 3],
+        rotation: u32,
+    ) -> Self {
+        Self::plain(
+            h,
+            group,
+            None,
+            EntityKind::PointNRotTrans {
+                params: params.map(ParamId),
+                base,
+                translation: translation.map(ParamId),
+                rotation: EntityId(rotation),
+            },
+        )
+    }
+
+    /// A 3D normal with quaternion `params`, held at `q * base` where `q` is the quaternion
+    /// of normal `rotation`.
+    #[must_use]
+    pub fn normal_n_rot(
+        h: u32,
+        group: u32,
+        params: [u32; 4],
+        base: [f64; 4],
+        rotation: u32,
+    ) -> Self {
+        Self::plain(
+            h,
+            group,
+            None,
+            EntityKind::NormalNRot {
+                params: params.map(ParamId),
+                base,
+                rotation: EntityId(rotation),
             },
         )
     }

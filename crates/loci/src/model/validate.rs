@@ -148,6 +148,26 @@ impl System {
                 }
                 self.expect(owner, "base", *base, point, "a point")?;
             }
+            EntityKind::PointNRotTrans { base, rotation, .. } => {
+                finite(owner, "base", base)?;
+                self.expect(
+                    owner,
+                    "rotation",
+                    *rotation,
+                    |t| t == EntityType::NormalIn3d,
+                    "a 3D normal",
+                )?;
+            }
+            EntityKind::NormalNRot { base, rotation, .. } => {
+                finite(owner, "base", base)?;
+                self.expect(
+                    owner,
+                    "rotation",
+                    *rotation,
+                    |t| t == EntityType::NormalIn3d,
+                    "a 3D normal",
+                )?;
+            }
             EntityKind::LineSegment { .. } | EntityKind::Cubic { .. } => {
                 for (field, r) in e.kind.references() {
                     self.expect(owner, field, r, point, "a point")?;
@@ -234,5 +254,17 @@ impl System {
             self.expect(owner, field, h, |t| want.accepts(t), want.describe())?;
         }
         Ok(())
+    }
+}
+
+/// A constant an entity carries (a moved copy's base) must be a finite number.
+fn finite(owner: ObjectId, field: &'static str, vals: &[f64]) -> Result<(), ModelError> {
+    match vals.iter().find(|v| !v.is_finite()) {
+        Some(&value) => Err(ModelError::NonFinite {
+            owner,
+            field,
+            value,
+        }),
+        None => Ok(()),
     }
 }

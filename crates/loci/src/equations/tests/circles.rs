@@ -162,6 +162,36 @@ pub(super) fn cases() -> Vec<Case> {
             },
         },
         Case {
+            // SolveSpace keeps a circle whose radius parameter is negative and holds its
+            // points at |r|: a point 2 from the centre is on the circle of radius -2, and
+            // moving the radius to -2.5 leaves it 0.5 inside.
+            name: "pt_on_circle with a negative radius",
+            kind: Some(K::PtOnCircle),
+            forms: &[Free],
+            build: |fx, f| {
+                let circle = fx.circle(FIXED, Free, [1.0, 2.0, 3.0], circle_q(), -2.0);
+                let q = circle_q();
+                let q = Quat {
+                    w: q[0],
+                    x: q[1],
+                    y: q[2],
+                    z: q[3],
+                };
+                let t = 200f64.to_radians();
+                let p = v3([1.0, 2.0, 3.0])
+                    .plus(q.u().scale(2.0 * t.cos()))
+                    .plus(q.v().scale(2.0 * t.sin()))
+                    .plus(q.n().scale(-0.7));
+                let p = fx.p3(MOVING, arr(p));
+                let brk = vec![(fx.radius_param(circle), -2.5)];
+                let c = fx
+                    .con(K::PtOnCircle, f)
+                    .with_points(p, 0)
+                    .with_entities([circle, 0, 0, 0]);
+                Built::new(c, Break::Set(brk), Expect::Rows(vec![-0.5]))
+            },
+        },
+        Case {
             name: "equal_radius",
             kind: Some(K::EqualRadius),
             forms: &[Free, Plane, Mixed],

@@ -184,6 +184,34 @@ impl Fx {
         self.add(|h| Entity::normal_3d(h, g, ps))
     }
 
+    /// A rigid motion in group `g`: a translation vector's parameters and a normal holding
+    /// the rotation `q`.
+    pub fn motion(&mut self, g: u32, t: [f64; 3], q: [f64; 4]) -> ([u32; 3], u32) {
+        let t = t.map(|v| self.param(g, v));
+        (t, self.normal3(g, q))
+    }
+
+    /// A `point_n_rot_trans` in group `g` with base `base`, moved by `translation` and the
+    /// normal `rotation`, its own coordinates at `at`.
+    pub fn moved_point(
+        &mut self,
+        g: u32,
+        at: [f64; 3],
+        base: [f64; 3],
+        translation: [u32; 3],
+        rotation: u32,
+    ) -> u32 {
+        let ps = at.map(|v| self.param(g, v));
+        self.add(|h| Entity::point_n_rot_trans(h, g, ps, base, translation, rotation))
+    }
+
+    /// A `normal_n_rot` in group `g` with base `base`, turned by the normal `rotation`, its own
+    /// quaternion at `at`.
+    pub fn rotated_normal(&mut self, g: u32, at: [f64; 4], base: [f64; 4], rotation: u32) -> u32 {
+        let ps = at.map(|v| self.param(g, v));
+        self.add(|h| Entity::normal_n_rot(h, g, ps, base, rotation))
+    }
+
     pub fn normal2(&mut self, wp: u32) -> u32 {
         self.add(|h| Entity::normal_2d(h, FIXED, wp))
     }
@@ -496,7 +524,8 @@ pub(super) fn compile(sys: &System, c: &Constraint) -> One {
     one
 }
 
-/// The implicit condition of entity `h` (a 3D normal or an arc), compiled by
+/// The implicit condition of entity `h` (a 3D normal, an arc, a moved point or a rotated
+/// normal), compiled by
 /// [`compile_group`] at the system's current values.
 pub(super) fn compile_implicit(sys: &System, h: u32) -> One {
     sys.validate().expect("the fixture builds a valid model");
@@ -537,7 +566,10 @@ pub(super) fn compile_all(sys: &System, g: u32) -> Vec<(String, One)> {
     for e in sys.entities() {
         let implicit = matches!(
             e.kind,
-            EntityKind::NormalIn3d { .. } | EntityKind::ArcOfCircle { .. }
+            EntityKind::NormalIn3d { .. }
+                | EntityKind::ArcOfCircle { .. }
+                | EntityKind::PointNRotTrans { .. }
+                | EntityKind::NormalNRot { .. }
         );
         if e.group == GroupId(g) && implicit {
             out.push((format!("entity {}", e.h.0), compile_implicit(sys, e.h.0)));

@@ -228,7 +228,10 @@ fn every_kind_is_covered_in_each_form_it_allows() {
         assert!(ok, "{k}: covered in {f:?}");
     }
     let implicit = cases.iter().filter(|c| c.kind.is_none()).count();
-    assert_eq!(implicit, 2, "unit quaternion and arc radii");
+    assert_eq!(
+        implicit, 4,
+        "unit quaternion, arc radii, moved point and rotated normal"
+    );
     // The figures for the record (shown with --nocapture): every pair runs all three checks.
     let kinds = || forms.iter().filter(|(k, _)| k.is_some()).map(|(_, f)| f);
     let per_form = |form| kinds().filter(|f| f.contains(&form)).count();

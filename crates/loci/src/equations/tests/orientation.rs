@@ -1,7 +1,8 @@
-//! Normals: equal orientation, and the unit length of a 3D normal's quaternion.
+//! Normals: equal orientation, the unit length of a 3D normal's quaternion, and the rigid motions
+//! of linked parts (moved points and rotated normals).
 
 use super::fixture::{
-    axis_angle, compile, rank, Break, Built, Case, Expect, Form, Fx, Target, FIXED, MOVING,
+    arr, axis_angle, compile, rank, v3, Break, Built, Case, Expect, Form, Fx, Target, FIXED, MOVING,
 };
 use std::f64::consts::FRAC_PI_2;
 
@@ -71,6 +72,50 @@ pub(super) fn cases() -> Vec<Case> {
                     target: Target::Entity(h),
                     brk: Break::Set(vec![(w, q[0] + 0.1)]),
                     expect: Expect::Rows(vec![0.2 * q[0] + 0.01]),
+                }
+            },
+        },
+        Case {
+            // A linked part's point: at t + q p0 q*. Moving t along x by 0.5 leaves the point
+            // 0.5 behind in x.
+            name: "point_n_rot_trans",
+            kind: None,
+            forms: &[Free],
+            build: |fx, _| {
+                let q = axis_angle([0.4, 1.0, -0.3], 0.9);
+                let t = [1.5, -0.5, 2.0];
+                let (th, rot) = fx.motion(MOVING, t, q);
+                let base = [0.7, -1.2, 0.4];
+                let r = quat(q);
+                let at = v3(t)
+                    .plus(r.u().scale(base[0]))
+                    .plus(r.v().scale(base[1]))
+                    .plus(r.n().scale(base[2]));
+                let h = fx.moved_point(MOVING, arr(at), base, th, rot);
+                Built {
+                    target: Target::Entity(h),
+                    brk: Break::Set(vec![(th[0], t[0] + 0.5)]),
+                    expect: Expect::Rows(vec![-0.5, 0.0, 0.0]),
+                }
+            },
+        },
+        Case {
+            // A linked part's normal: q q0. Raising its own w by 0.1 leaves it 0.1 off in w.
+            name: "normal_n_rot",
+            kind: None,
+            forms: &[Free],
+            build: |fx, _| {
+                let q = axis_angle([0.4, 1.0, -0.3], 0.9);
+                let (_, rot) = fx.motion(MOVING, [0.0; 3], q);
+                let base = axis_angle([1.0, -0.5, 0.2], 2.1);
+                let at = quat(q).times(quat(base));
+                let at = [at.w, at.x, at.y, at.z];
+                let h = fx.rotated_normal(MOVING, at, base, rot);
+                let w = fx.params(h)[0];
+                Built {
+                    target: Target::Entity(h),
+                    brk: Break::Set(vec![(w, at[0] + 0.1)]),
+                    expect: Expect::Rows(vec![0.1, 0.0, 0.0, 0.0]),
                 }
             },
         },

@@ -12,7 +12,7 @@
 use super::codes::{self, ConstraintCode, EntityCode, GroupKind};
 use super::records::{Kind, Record};
 use super::{GroupStatus, Note, ParamLine, SlvsError, SlvsFile, SlvsGroup};
-use crate::geom::quaternion_from_uv;
+use crate::geom::{quaternion_from_uv, Quat};
 use crate::model::{Constraint, Entity, EntityId, GroupId, ObjectId, Param, ParamId, System};
 use std::collections::{HashMap, HashSet};
 
@@ -61,6 +61,9 @@ struct Builder<'a> {
     fresh_constraint: Fresh,
     /// Groups that copy by translation (extrude, step and repeat), by handle.
     copiers: HashMap<u32, Copier>,
+    /// Linked parts, by group handle: the normal loci made over the group's rotation
+    /// quaternion (0 until the parameters are read, or when they are missing).
+    linked: HashMap<u32, u32>,
     /// File entities modelled as constants although they move with their own group's
     /// unknowns, with that group: a constraint of that group on them cannot be solved.
     frozen: HashMap<u32, u32>,
@@ -108,6 +111,7 @@ pub(crate) fn build(
         fresh_entity: Fresh::new(entity_handles),
         fresh_constraint: Fresh::new(constraint_handles),
         copiers: HashMap::new(),
+        linked: HashMap::new(),
         frozen: HashMap::new(),
         param_handles,
         skipped: HashMap::new(),
@@ -118,6 +122,7 @@ pub(crate) fn build(
     let mut groups = b.groups()?;
     b.requests()?;
     b.params()?;
+    b.linked_rotations(&mut groups);
     b.entities()?;
     b.copier_equations(&mut groups);
     b.constraints(&mut groups)?;
@@ -196,6 +201,9 @@ impl Builder<'_> {
                 GroupStatus::Solve
             } else if let Some(c) = Copier::of(kind, r) {
                 self.copiers.insert(h, c);
+                GroupStatus::Solve
+            } else if kind == GroupKind::Linked {
+                self.linked.insert(h, 0);
                 GroupStatus::Solve
             } else {
                 GroupStatus::Unsupported(format!("{} groups are not modelled by loci", kind.name()))
@@ -421,6 +429,20 @@ impl Builder<'_> {
                     })
                 }
             },
+            E::PointCopy if code == POINT_N_ROT_TRANS => match self.moved_point(h, act_point) {
+                Some(e) => e,
+                None => {
+                    let params = act_point.map(|v| self.constant(v));
+                    Entity::point_3d(h, FIXED_GROUP.0, params)
+                }
+            },
+            E::NormalCopy if code == NORMAL_N_ROT => match self.rotated_normal(h, act_normal) {
+                Some(e) => e,
+                None => {
+                    let params = act_normal.map(|v| self.constant(v));
+                    Entity::normal_3d(h, FIXED_GROUP.0, params)
+                }
+            },
             E::PointCopy if code == POINT_N_TRANS => match self.translated(h, act_point) {
                 Some(e) => e,
                 None => {
@@ -450,6 +472,11 @@ impl Builder<'_> {
                     return Ok(None);
                 };
                 let copier = self.copiers.contains_key(&((h >> 16) & 0x7fff));
+                if self.linked_rotation(h).is_some() {
+                    // A face of a linked part turns and moves with the part; loci holds it
+                    // where it was saved.
+                    self.frozen.insert(h, (h >> 16) & 0x7fff);
+                }
                 let origin = match code {
                     // A face through a point the group copied (an extrusion's top or bottom).
                     FACE_NORMAL_PT if copier && pt(0) >> 16 == h >> 16 => pt(0),
@@ -579,6 +606,115 @@ impl Builder<'_> {
         Some(Entity::point_n_trans(h, g, params, src, translation, times))
     }
 
+    /// The linked parts' rotations: SolveSpace holds a linked group's quaternion (its
+    /// parameters 3..6, after the translation's 0..2) at unit length with an equation of the
+    /// group; loci makes it a normal of the group, whose implicit condition is the same. A
+    /// group without its seven parameters is not modelled.
+    fn linked_rotations(&mut self, groups: &mut [SlvsGroup]) {
+        let mut hs: Vec<u32> = self.linked.keys().copied().collect();
+        hs.sort_unstable();
+        for g in hs {
+            let base_h = GROUP_BIT | g << 16;
+            if !(0..7).all(|i| self.param_handles.contains(&(base_h | i))) {
+                self.linked.remove(&g);
+                groups[self.groups[&g]].status = GroupStatus::Unsupported(
+                    "the file does not hold the linked part's translation and rotation".into(),
+                );
+                continue;
+            }
+            let normal = self.fresh_entity.take();
+            let q = [3, 4, 5, 6].map(|i| base_h | i);
+            let _ = self.sys.add_entity(Entity::normal_3d(normal, g, q));
+            self.linked.insert(g, normal);
+        }
+    }
+
+    /// For an entity of a linked part: its group's translation parameters, the normal holding
+    /// its rotation, and their saved values (the rotation scaled to unit length).
+    fn linked_rotation(&self, h: u32) -> Option<LinkedMotion> {
+        if h & GROUP_BIT == 0 {
+            return None;
+        }
+        let g = (h >> 16) & 0x7fff;
+        let normal = *self.linked.get(&g).filter(|&&n| n != 0)?;
+        let base_h = h & 0xffff_0000;
+        let translation = [base_h, base_h | 1, base_h | 2];
+        let t = self.values(translation)?;
+        let [w, x, y, z] = self.values([3, 4, 5, 6].map(|i| base_h | i))?;
+        let len = (w * w + x * x + y * y + z * z).sqrt();
+        // A zero (or NaN) quaternion is no rotation.
+        if len.is_nan() || len <= 1e-12 {
+            return None;
+        }
+        let q = Quat {
+            w: w / len,
+            x: x / len,
+            y: y / len,
+            z: z / len,
+        };
+        Some(LinkedMotion {
+            translation,
+            normal,
+            t,
+            q,
+        })
+    }
+
+    /// A point of a linked part, saved at `at`: coordinates of its own tied to the base point
+    /// of the linked file, recovered from the saved values as `q* (at - t) q`. `None` outside
+    /// a modelled linked part (the caller holds it where it was saved).
+    fn moved_point(&mut self, h: u32, at: [f64; 3]) -> Option<Entity> {
+        let LinkedMotion {
+            translation,
+            normal,
+            t,
+            q,
+        } = self.linked_rotation(h)?;
+        let d = crate::geom::Vec3::new(at[0] - t[0], at[1] - t[1], at[2] - t[2]);
+        // The inverse rotation of d: its components along the rotated axes.
+        let base = [d.dot(q.u()), d.dot(q.v()), d.dot(q.n())];
+        let g = (h >> 16) & 0x7fff;
+        let params = at.map(|v| {
+            let p = self.fresh_param.take();
+            let _ = self.sys.add_param(Param::new(p, g, v));
+            p
+        });
+        Some(Entity::point_n_rot_trans(
+            h,
+            g,
+            params,
+            base,
+            translation,
+            normal,
+        ))
+    }
+
+    /// A normal of a linked part, saved as `at`: a quaternion of its own tied to the linked
+    /// file's orientation, recovered as `q* at`.
+    fn rotated_normal(&mut self, h: u32, at: [f64; 4]) -> Option<Entity> {
+        let LinkedMotion { normal, q, .. } = self.linked_rotation(h)?;
+        let a = Quat {
+            w: at[0],
+            x: at[1],
+            y: at[2],
+            z: at[3],
+        };
+        let b = q.conj().times(a);
+        let g = (h >> 16) & 0x7fff;
+        let params = at.map(|v| {
+            let p = self.fresh_param.take();
+            let _ = self.sys.add_param(Param::new(p, g, v));
+            p
+        });
+        Some(Entity::normal_n_rot(
+            h,
+            g,
+            params,
+            [b.w, b.x, b.y, b.z],
+            normal,
+        ))
+    }
+
     /// The values of parameters `ps`, if all are in the model.
     fn values<const N: usize>(&self, ps: [u32; N]) -> Option<[f64; N]> {
         let mut out = [0.0; N];
@@ -594,7 +730,8 @@ impl Builder<'_> {
         let e = self.sys.entity(h)?;
         match &e.kind {
             crate::EntityKind::PointIn3d { params }
-            | crate::EntityKind::PointNTrans { params, .. } => self.values(params.map(|p| p.0)),
+            | crate::EntityKind::PointNTrans { params, .. }
+            | crate::EntityKind::PointNRotTrans { params, .. } => self.values(params.map(|p| p.0)),
             crate::EntityKind::PointIn2d { params } => {
                 let [u, v] = self.values(params.map(|p| p.0))?;
                 let crate::EntityKind::Workplane { origin, normal } =
@@ -795,8 +932,21 @@ impl Builder<'_> {
     }
 }
 
+/// A linked part's motion: its translation parameters, the normal loci made over its
+/// rotation, and their saved values (the rotation scaled to unit length).
+struct LinkedMotion {
+    translation: [u32; 3],
+    normal: u32,
+    t: [f64; 3],
+    q: Quat<f64>,
+}
+
 /// SolveSpace's entity type of a translated point.
 const POINT_N_TRANS: i64 = 2010;
+/// A point turned and moved (a linked part's points).
+const POINT_N_ROT_TRANS: i64 = 2011;
+/// A normal turned (a linked part's normals).
+const NORMAL_N_ROT: i64 = 3011;
 /// A face through a point with a fixed normal.
 const FACE_NORMAL_PT: i64 = 5000;
 /// A face translated from another.

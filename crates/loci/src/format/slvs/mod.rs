@@ -21,9 +21,14 @@
 //! extrusion and in the workplane for a step and repeat, as SolveSpace does), with their
 //! top and bottom faces (and copied faces) as planes through those points. A face swept
 //! from a line, whose normal turns with the translation, is held as saved; a constraint of
-//! its own group on it makes that group unsupported.
+//! its own group on it makes that group unsupported. Linked parts: the imported points and
+//! normals are [`point_n_rot_trans`](crate::EntityKind::PointNRotTrans) and
+//! [`normal_n_rot`](crate::EntityKind::NormalNRot) entities carried by the group's
+//! translation (parameters 0..2) and rotation quaternion (3..6, held at unit length as
+//! SolveSpace does); their constant bases are recovered from the saved positions and the
+//! saved motion, so the linked file itself is not read.
 //! What it does not: the other groups that build solids (lathe, revolve, helix, step and
-//! repeat by rotation, linked parts) are reported as unsupported by name and left as
+//! repeat by rotation) are reported as unsupported by name and left as
 //! saved; the geometry they generate is read from the file as constants, so later
 //! sketches that use it still solve. Text, images, splines through more than four points and periodic splines
 //! are skipped (their points are modelled); the saved solid (meshes, surfaces) is skipped.
@@ -34,12 +39,14 @@
 
 mod codes;
 pub mod conformance;
+mod export;
 mod load;
 mod records;
 mod solve;
 mod write;
 
 pub use codes::GroupKind;
+pub use export::{export, Export, ExportError};
 pub use load::FIXED_GROUP;
 pub use solve::{solve_all, GroupResult, GroupSolve};
 

@@ -455,3 +455,129 @@ fn text_garbage_never_panics() {
         }
     }
 }
+
+/// A linked part (group 3) placed at (1, 2, 3) turned a quarter turn about z, with two
+/// imported points, the line between them and a normal, as SolveSpace saves them (the
+/// imported file itself is not needed).
+const LINKED: &str = "@MAGIC@
+
+
+Group.h.v=00000001
+Group.type=5000
+Group.name=#references
+Group.remap={
+}
+AddGroup
+
+Group.h.v=00000003
+Group.type=5300
+Group.order=2
+Group.name=part
+Group.remap={
+}
+Group.impFileRel=part.slvs
+AddGroup
+
+Param.h.v.=80030000
+Param.val=1.00000000000000000000
+AddParam
+
+Param.h.v.=80030001
+Param.val=2.00000000000000000000
+AddParam
+
+Param.h.v.=80030002
+Param.val=3.00000000000000000000
+AddParam
+
+Param.h.v.=80030003
+Param.val=0.70710678118654757274
+AddParam
+
+Param.h.v.=80030004
+AddParam
+
+Param.h.v.=80030005
+AddParam
+
+Param.h.v.=80030006
+Param.val=0.70710678118654757274
+AddParam
+
+Entity.h.v=80030001
+Entity.type=11000
+Entity.point[0].v=80030002
+Entity.point[1].v=80030003
+AddEntity
+
+Entity.h.v=80030002
+Entity.type=2011
+Entity.actPoint.x=1.00000000000000000000
+Entity.actPoint.y=3.00000000000000000000
+Entity.actPoint.z=3.00000000000000000000
+AddEntity
+
+Entity.h.v=80030003
+Entity.type=2011
+Entity.actPoint.x=-1.00000000000000000000
+Entity.actPoint.y=2.00000000000000000000
+Entity.actPoint.z=3.00000000000000000000
+AddEntity
+
+Entity.h.v=80030004
+Entity.type=3011
+Entity.point[0].v=80030002
+Entity.actNormal.w=0.70710678118654757274
+Entity.actNormal.vz=0.70710678118654757274
+AddEntity
+
+";
+
+#[test]
+fn linked_parts_recover_their_base_geometry_and_solve() {
+    use crate::EntityKind;
+    let mut f = load(LINKED).unwrap();
+    assert_eq!(f.groups[1].kind, GroupKind::Linked);
+    assert_eq!(f.groups[1].status, GroupStatus::Solve);
+    let close = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-12);
+    // The bases are the saved positions taken back through the saved motion.
+    for (h, want) in [
+        (0x8003_0002, [1.0, 0.0, 0.0]),
+        (0x8003_0003, [0.0, 2.0, 0.0]),
+    ] {
+        match &f.system.entity(crate::EntityId(h)).unwrap().kind {
+            EntityKind::PointNRotTrans {
+                base, translation, ..
+            } => {
+                assert!(close(base, &want), "{h:08x}: {base:?}");
+                assert_eq!(translation[0], ParamId(0x8003_0000));
+            }
+            k => panic!("{h:08x} is {k:?}"),
+        }
+    }
+    match &f.system.entity(crate::EntityId(0x8003_0004)).unwrap().kind {
+        EntityKind::NormalNRot { base, .. } => assert!(close(base, &[1.0, 0.0, 0.0, 0.0])),
+        k => panic!("normal is {k:?}"),
+    }
+    // Nothing holds the part: it solves where it is, free to move six ways.
+    let res = solve_all(&mut f, &Config::default());
+    let GroupResult::Solved(r) = &res[1].result else {
+        panic!("linked group not solved: {:?}", res[1].result)
+    };
+    assert_eq!((r.outcome, r.dof), (Outcome::Okay, 6));
+    assert_eq!(f.system.value(ParamId(0x8003_0001)), Some(2.0));
+}
+
+#[test]
+fn a_linked_part_without_its_motion_is_not_modelled() {
+    let cut = LINKED.replace(
+        "Param.h.v.=80030006\nParam.val=0.70710678118654757274\nAddParam\n",
+        "",
+    );
+    let mut f = load(&cut).unwrap();
+    let res = solve_all(&mut f, &Config::default());
+    match &res[1].result {
+        GroupResult::Unsupported(why) => assert!(why.contains("rotation"), "{why}"),
+        r => panic!("solved without its rotation: {r:?}"),
+    }
+}
