@@ -1,5 +1,6 @@
 //! Solving a chain of line segments (coincident joints, lengths, angles) from a perturbed
-//! start, at 100, 1,000 and 10,000 segments.
+//! start, at 100, 1,000 and 10,000 segments; and re-solving the 10,000-segment chain with a
+//! [`loci::Solver`] after its fixed first point moves by 0.01 (the structure is reused).
 //!
 //! Run: `cargo bench -p loci --bench chain`; for a quick look,
 //! `cargo bench -p loci --bench chain -- --sample-size 10 --warm-up-time 1 --measurement-time 5`.
@@ -11,7 +12,7 @@
 mod chain;
 
 use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion};
-use loci::{Config, Outcome};
+use loci::{Config, Outcome, ParamId, Solver};
 
 fn bench_chain(c: &mut Criterion) {
     let mut group = c.benchmark_group("chain");
@@ -33,5 +34,29 @@ fn bench_chain(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_chain);
+fn bench_resolve(c: &mut Criterion) {
+    let mut group = c.benchmark_group("chain_resolve");
+    group.sample_size(10);
+    let ch = chain::chain(10_000, 1, 0.3);
+    let mut sys = ch.system.clone();
+    let mut solver = Solver::new(ch.group, &[], Config::default());
+    let rep = solver.solve(&mut sys).expect("valid");
+    assert_eq!((rep.outcome, rep.dof), (Outcome::Okay, 0));
+    // The first point's u coordinate: moving it drags the whole chain along.
+    let first = ParamId(100);
+    let mut step = 0.01;
+    group.bench_function("10000", |b| {
+        b.iter(|| {
+            let v = sys.value(first).expect("the first point's parameter");
+            sys.set_value(first, v + step);
+            step = -step;
+            let rep = solver.solve(&mut sys).expect("valid");
+            assert!(rep.outcome.is_ok());
+            rep
+        });
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_chain, bench_resolve);
 criterion_main!(benches);

@@ -111,7 +111,7 @@ fn dirs<S: Scalar>(e: &Equation, g: &Geo<S>, i: usize, j: usize) -> (Vec3<S>, Ve
 }
 
 /// The target angle in radians, with `other` meaning the supplement.
-fn target(e: &Equation) -> f64 {
+pub(super) fn target(e: &Equation) -> f64 {
     let t = e.val.to_radians();
     if e.other {
         std::f64::consts::PI - t

@@ -9,6 +9,7 @@
 mod circles;
 mod compile;
 mod curves;
+mod fast;
 mod lines;
 mod orientation;
 mod points;
@@ -220,6 +221,13 @@ impl Equation {
     /// Derivatives are exact, by forward differentiation: one pass with `N >= active.len()`
     /// directions for up to 16 unknowns, or passes of 16 directions each beyond that.
     pub fn jacobian_active(&self, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f64]) {
+        if !fast::jacobian(self, x, active, res, jac) {
+            self.jacobian_dual(x, active, res, jac);
+        }
+    }
+
+    /// [`Equation::jacobian_active`] by dual numbers alone, for every kind.
+    pub fn jacobian_dual(&self, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f64]) {
         match (x.len(), active.len()) {
             (0..=8, 0..=4) => self.pass::<4, 8>(x, active, 0, res, jac),
             (0..=8, _) => self.pass::<8, 8>(x, active, 0, res, jac),

@@ -173,31 +173,45 @@ impl Component {
         }
     }
 
-    fn gather(&self, b: &Block, kern: &Kernel, x: &[f64], values: &[f64], xs: &mut Vec<f64>) {
+    /// Every local slot of every block, in `slot_col` order: constants from `values`, unknowns
+    /// from `x`. Done once per solve; afterwards [`Component::load`] refreshes the unknowns.
+    fn gather_all(&self, kernels: &[Kernel], x: &[f64], values: &[f64], xs: &mut Vec<f64>) {
         xs.clear();
-        let cols = &self.block_cols[b.cols0 as usize..];
-        let slots = &self.slot_col[b.slot0 as usize..b.slot0 as usize + kern.locals.len()];
-        for (&c, &p) in slots.iter().zip(&kern.locals) {
-            xs.push(if c >= 0 {
-                x[cols[c as usize] as usize]
-            } else {
-                values[p as usize]
-            });
+        xs.resize(self.slot_col.len(), 0.0);
+        for b in &self.blocks {
+            let kern = &kernels[b.kernel];
+            let s0 = b.slot0 as usize;
+            let cols = &self.block_cols[b.cols0 as usize..];
+            let slots = &self.slot_col[s0..s0 + kern.locals.len()];
+            for ((o, &c), &p) in xs[s0..].iter_mut().zip(slots).zip(&kern.locals) {
+                *o = if c >= 0 {
+                    x[cols[c as usize] as usize]
+                } else {
+                    values[p as usize]
+                };
+            }
+        }
+    }
+
+    /// Writes the unknowns at `x` into the local slots (constants stay as gathered).
+    fn load(&self, x: &[f64], xs: &mut [f64]) {
+        for b in &self.blocks {
+            let (s0, a0) = (b.slot0 as usize, b.active0 as usize);
+            let cols = &self.block_cols[b.cols0 as usize..];
+            let active = &self.active[a0..a0 + b.nactive as usize];
+            let active_col = &self.active_col[a0..a0 + b.nactive as usize];
+            for (&s, &c) in active.iter().zip(active_col) {
+                xs[s0 + s as usize] = x[cols[c as usize] as usize];
+            }
         }
     }
 
     /// Residuals only.
-    fn residuals(
-        &self,
-        kernels: &[Kernel],
-        x: &[f64],
-        values: &[f64],
-        r: &mut [f64],
-        xs: &mut Vec<f64>,
-    ) {
+    fn residuals(&self, kernels: &[Kernel], x: &[f64], r: &mut [f64], xs: &mut [f64]) {
+        self.load(x, xs);
         for b in &self.blocks {
             let k = &kernels[b.kernel];
-            self.gather(b, k, x, values, xs);
+            let xs = &xs[b.slot0 as usize..b.slot0 as usize + k.locals.len()];
             let mut out = Rows::new();
             k.eq.eval(xs, &mut out);
             r[b.row0..b.row0 + k.rows].copy_from_slice(&out.v[..k.rows]);
@@ -209,15 +223,15 @@ impl Component {
         &self,
         kernels: &[Kernel],
         x: &[f64],
-        values: &[f64],
         r: &mut [f64],
         jv: &mut [f64],
-        xs: &mut Vec<f64>,
+        xs: &mut [f64],
         jl: &mut Vec<f64>,
     ) {
+        self.load(x, xs);
         for b in &self.blocks {
             let k = &kernels[b.kernel];
-            self.gather(b, k, x, values, xs);
+            let xs = &xs[b.slot0 as usize..b.slot0 as usize + k.locals.len()];
             let na = b.nactive as usize;
             let active = &self.active[b.active0 as usize..b.active0 as usize + na];
             let active_col = &self.active_col[b.active0 as usize..b.active0 as usize + na];
@@ -286,6 +300,8 @@ impl Component {
             v.clear();
             v.resize(n, 0.0);
         }
+        self.gather_all(kernels, x, values, xs);
+        let xs = &mut xs[..];
         let (r, jv, jn, inv, y, dx, xt, rt) = (
             &mut r[..],
             &mut jv[..],
@@ -315,7 +331,7 @@ impl Component {
         // Iterations since the merit last reached a new low.
         let (mut best, mut since_best) = (f64::INFINITY, 0usize);
         loop {
-            self.jacobian(kernels, x, values, r, jv, xs, jl);
+            self.jacobian(kernels, x, r, jv, xs, jl);
             // Normalise rows of J S so the pivots of G measure independence, not units.
             inv.iter_mut().for_each(|v| *v = 0.0);
             for (c, col) in self.columns.iter().enumerate() {
@@ -401,7 +417,7 @@ impl Component {
                     for c in 0..ncols {
                         xt[c] = x[c] + alpha * dx[c];
                     }
-                    self.residuals(kernels, &xt, values, rt, xs);
+                    self.residuals(kernels, &xt, rt, xs);
                     let mt = merit(&rt, &inv);
                     if mt.is_finite() && (mt < m_ref.min(m0 * 10.0) || mt == 0.0) {
                         accepted = true;
@@ -423,7 +439,7 @@ impl Component {
                         for c in 0..ncols {
                             xt[c] = x[c] + dx[c];
                         }
-                        self.residuals(kernels, &xt, values, rt, xs);
+                        self.residuals(kernels, &xt, rt, xs);
                         let mt = merit(&rt, &inv);
                         if mt.is_finite() && (mt < m0 || mt == 0.0) {
                             accepted = true;
