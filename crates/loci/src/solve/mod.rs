@@ -303,16 +303,17 @@ fn solve_values(
     // Group kernels and columns by component, in order of first appearance, as compressed
     // lists (two allocations, however many components).
     let mut comp_index = vec![u32::MAX; ncols];
-    let mut col_comp = vec![0u32; ncols];
     let mut ncomps = 0usize;
-    for c in 0..ncols {
-        let r = find(&mut comp_of_col, c as u32) as usize;
-        if comp_index[r] == u32::MAX {
-            comp_index[r] = ncomps as u32;
-            ncomps += 1;
-        }
-        col_comp[c] = comp_index[r];
-    }
+    let col_comp: Vec<u32> = (0..ncols as u32)
+        .map(|c| {
+            let r = find(&mut comp_of_col, c) as usize;
+            if comp_index[r] == u32::MAX {
+                comp_index[r] = ncomps as u32;
+                ncomps += 1;
+            }
+            comp_index[r]
+        })
+        .collect();
     let kernel_comp: Vec<u32> = kernels
         .iter()
         .map(|k| {

@@ -12,6 +12,7 @@
 
 mod circles;
 mod curves;
+mod fast;
 mod fixture;
 mod lines;
 mod orientation;
