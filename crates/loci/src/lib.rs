@@ -38,6 +38,7 @@ mod error;
 pub mod format;
 pub mod geom;
 mod model;
+mod par;
 mod solve;
 
 pub use diagnose::{

@@ -47,17 +47,37 @@ pub(crate) fn compile_group(
     values: &[f64],
 ) -> Result<Compiled, ModelError> {
     let r = Resolver::new(sys);
-    let mut out = Compiled::default();
-    let mut kernels = Vec::new();
-    let mut x = Vec::new();
-    let mine = sys
+    let mine: Vec<&Constraint> = sys
         .constraints()
         .iter()
-        .filter(|c| c.group == group && !c.reference);
-    out.links.reserve(mine.clone().count());
-    for c in mine {
-        compile_constraint(&r, c, values, &mut x, &mut out)?;
+        .filter(|c| c.group == group && !c.reference)
+        .collect();
+    // Constraints compile independently; large groups in chunks on all cores, joined in order.
+    const CHUNK: usize = 1024;
+    let chunks: Vec<&[&Constraint]> = mine.chunks(CHUNK).collect();
+    let parts = crate::par::map_items(
+        chunks,
+        mine.len() >= crate::par::MIN_PARALLEL,
+        Vec::new,
+        |x, _, chunk| -> Result<Compiled, ModelError> {
+            let mut part = Compiled::default();
+            part.links.reserve(chunk.len());
+            for c in chunk {
+                compile_constraint(&r, c, values, x, &mut part)?;
+            }
+            Ok(part)
+        },
+    );
+    let parts = parts.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let mut out = Compiled::default();
+    out.kernels.reserve(parts.iter().map(|p| p.kernels.len()).sum());
+    out.links.reserve(parts.iter().map(|p| p.links.len()).sum());
+    for mut part in parts {
+        out.kernels.append(&mut part.kernels);
+        out.links.append(&mut part.links);
     }
+    let mut x = Vec::new();
+    let mut kernels = Vec::new();
     compile_entities(&r, group, values, &mut x, &mut kernels)?;
     out.kernels.append(&mut kernels);
     Ok(out)

@@ -77,22 +77,44 @@ impl Locals {
 /// Resolves entity handles into slot-based references.
 pub(crate) struct Resolver<'a> {
     pub sys: &'a System,
-    /// Workplanes already resolved, by entity position: their origin and quaternion parameters
+    /// Every workplane, resolved once, by entity position: its origin and quaternion parameters
     /// (positions in [`System::params`]), or `None`. Every 2D point refers to its workplane, so
-    /// this is hot.
-    frames: std::cell::RefCell<Vec<Option<[u32; 7]>>>,
+    /// this is hot. Filled before any constraint is resolved, so that one resolver serves many
+    /// threads.
+    frames: Vec<Option<[u32; 7]>>,
 }
 
 impl<'a> Resolver<'a> {
     pub fn new(sys: &'a System) -> Self {
-        Self {
+        let mut r = Self {
             sys,
-            frames: Default::default(),
+            frames: Vec::new(),
+        };
+        let mut frames = vec![None; sys.entities().len()];
+        let mut any = false;
+        for (i, e) in sys.entities().iter().enumerate() {
+            if !matches!(e.kind, EntityKind::Workplane { .. }) {
+                continue;
+            }
+            let mut l = Locals::default();
+            // A workplane that does not resolve is reported by the constraint that uses it.
+            if let Ok(Ent::Workplane(f)) = r.entity(ObjectId::Entity(e.h), e.h, &mut l) {
+                let mut g = [0u32; 7];
+                for (o, &s) in g.iter_mut().zip(f.origin.iter().chain(&f.q)) {
+                    *o = l.params[s as usize];
+                }
+                frames[i] = Some(g);
+                any = true;
+            }
         }
+        if any {
+            r.frames = frames;
+        }
+        r
     }
 
     fn cached_frame(&self, h: EntityId, index: usize, l: &mut Locals) -> Option<Frame> {
-        let g = (*self.frames.borrow().get(index)?)?;
+        let g = (*self.frames.get(index)?)?;
         let mut s = [0; 7];
         for (o, p) in s.iter_mut().zip(g) {
             *o = l.slot(p as usize);
@@ -102,18 +124,6 @@ impl<'a> Resolver<'a> {
             origin: [s[0], s[1], s[2]],
             q: [s[3], s[4], s[5], s[6]],
         })
-    }
-
-    fn remember_frame(&self, index: usize, f: &Frame, l: &Locals) {
-        let mut g = [0u32; 7];
-        for (o, &s) in g.iter_mut().zip(f.origin.iter().chain(&f.q)) {
-            *o = l.params[s as usize];
-        }
-        let mut frames = self.frames.borrow_mut();
-        if frames.len() <= index {
-            frames.resize(self.sys.entities().len().max(index + 1), None);
-        }
-        frames[index] = Some(g);
     }
 
     fn param(
@@ -236,7 +246,6 @@ impl<'a> Resolver<'a> {
                     origin: o,
                     q,
                 };
-                self.remember_frame(index, &f, l);
                 l.last_frame = Some(f);
                 Ent::Workplane(f)
             }

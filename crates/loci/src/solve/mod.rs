@@ -21,6 +21,7 @@ pub use config::Config;
 pub use report::{Outcome, Report};
 
 use crate::equations::{compile_group, Link, Owner};
+use crate::par;
 use crate::error::SolveError;
 use crate::model::{GroupId, ParamId, System};
 use newton::Component;
@@ -342,41 +343,49 @@ fn solve_values(
     let mut conflicting: Vec<Owner> = Vec::new();
     let mut unsatisfied: Vec<Owner> = Vec::new();
     let mut x_all: Vec<f64> = col_root.iter().map(|&r| start[r]).collect();
-    // Column -> position within its component; set per component and reset after, so the
-    // cost stays linear in the number of components.
-    let mut local = vec![u32::MAX; ncols];
-    let mut scratch = newton::Scratch::default();
-    let reuse = cache.components.len() == ncomps;
-    if !reuse {
-        cache.components.clear();
-    }
+    // Each column's position within its component.
+    let mut local = vec![0u32; ncols];
     for ci in 0..ncomps {
-        let (members, cols) = (comps.members(ci), comps.cols(ci));
-        for (i, &c) in cols.iter().enumerate() {
+        for (i, &c) in comps.cols(ci).iter().enumerate() {
             local[c] = i as u32;
         }
-        let scale: Vec<f64> = cols
-            .iter()
-            .map(|&c| {
-                if root_dragged[col_root[c]] {
-                    cfg.dragged_scale
-                } else {
-                    1.0
-                }
-            })
-            .collect();
-        let map = |p: usize| col_of_param(p, &col_of_root).map(|c| local[c as usize]);
-        if !reuse {
-            cache
-                .components
-                .push(Component::new(kernels, members, &map, cols.len(), scale));
-        }
-        let comp = &mut cache.components[ci];
-        for &c in cols {
-            local[c] = u32::MAX;
-        }
-        let mut x: Vec<f64> = cols.iter().map(|&c| x_all[c]).collect();
-        let fin = comp.solve(kernels, &mut x, &values, cfg, &mut scratch);
+    }
+    let parallel = report.equations >= par::MIN_PARALLEL && ncomps > 1;
+    if cache.components.len() != ncomps {
+        let build = |_: &mut (), ci: usize, _: ()| {
+            let (members, cols) = (comps.members(ci), comps.cols(ci));
+            let scale: Vec<f64> = cols
+                .iter()
+                .map(|&c| {
+                    if root_dragged[col_root[c]] {
+                        cfg.dragged_scale
+                    } else {
+                        1.0
+                    }
+                })
+                .collect();
+            let map = |p: usize| col_of_param(p, &col_of_root).map(|c| local[c as usize]);
+            Component::new(kernels, members, &map, cols.len(), scale)
+        };
+        cache.components = par::map_items(vec![(); ncomps], parallel, || (), build);
+    }
+    // The unknowns of every component, in component order, cut into one slice per component.
+    let mut x_grouped: Vec<f64> = comps.cols.iter().map(|&c| x_all[c]).collect();
+    let mut work = Vec::with_capacity(ncomps);
+    let mut rest = &mut x_grouped[..];
+    for comp in cache.components.iter_mut() {
+        let (x, tail) = rest.split_at_mut(comp.scale.len());
+        work.push((comp, x));
+        rest = tail;
+    }
+    let finishes = par::map_items(
+        work,
+        parallel,
+        newton::Scratch::default,
+        |scratch, _, (comp, x)| comp.solve(kernels, x, &values, cfg, scratch),
+    );
+    for (ci, fin) in finishes.into_iter().enumerate() {
+        let comp = &cache.components[ci];
         report.iterations = report.iterations.max(fin.iterations);
         report.residual = report.residual.max(fin.residual);
         rank_total += comp.rows - fin.dropped.len();
@@ -385,7 +394,8 @@ fn solve_values(
             kernels[comp.blocks[b as usize].kernel].owner
         };
         // Kept even when the component failed: the diagnosis starts where Newton stopped.
-        for (i, &c) in cols.iter().enumerate() {
+        let x = &x_grouped[comps.col_ptr[ci]..comps.col_ptr[ci + 1]];
+        for (i, &c) in comps.cols(ci).iter().enumerate() {
             x_all[c] = x[i];
         }
         if fin.converged {

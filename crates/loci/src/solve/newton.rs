@@ -235,8 +235,12 @@ impl Component {
             let na = b.nactive as usize;
             let active = &self.active[b.active0 as usize..b.active0 as usize + na];
             let active_col = &self.active_col[b.active0 as usize..b.active0 as usize + na];
-            jl.clear();
-            jl.resize(k.rows * na, 0.0);
+            // Every entry is written: no need to clear between blocks.
+            let need = k.rows * na;
+            if jl.len() < need {
+                jl.resize(need, 0.0);
+            }
+            let jl = &mut jl[..need];
             k.eq.jacobian_active(xs, active, &mut r[b.row0..b.row0 + k.rows], jl);
             let w = b.ncols as usize;
             let block = &mut jv[b.jv0..b.jv0 + k.rows * w];
