@@ -9,20 +9,17 @@
 /// `G` as a dense symmetric matrix (lower triangle used) and its factors.
 pub(crate) struct DenseLdlt {
     n: usize,
-    /// Row-major `n x n`; `a[i * n + j]` for `j <= i`.
-    a: Vec<f64>,
-    /// Unit lower factor below the diagonal, `D` on it; row-major like `a`.
-    l: Vec<f64>,
-    dropped: Vec<bool>,
+    /// `G` then its factors, one allocation: `G` row-major `n x n` (`[i * n + j]` for `j <= i`),
+    /// then the unit lower factor below the diagonal with `D` on it (infinite for a dropped
+    /// row), row-major alike.
+    m: Vec<f64>,
 }
 
 impl DenseLdlt {
     pub fn new(n: usize) -> Self {
         Self {
             n,
-            a: vec![0.0; n * n],
-            l: vec![0.0; n * n],
-            dropped: vec![false; n],
+            m: vec![0.0; 2 * n * n],
         }
     }
 
@@ -36,72 +33,75 @@ impl DenseLdlt {
     }
 
     pub fn values_mut(&mut self) -> &mut [f64] {
-        &mut self.a
+        let nn = self.n * self.n;
+        &mut self.m[..nn]
     }
 
     /// Factorises `G + lambda I`; pivots at or below `eps` are dropped.
     pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
         let n = self.n;
+        let (a, l) = self.m.split_at_mut(n * n);
+        // A dropped row contributes nothing (its column of L is zero): its D is infinite.
+        let kept = |l: &[f64], j: usize| l[j * n + j] != f64::INFINITY;
         for k in 0..n {
-            let mut d = self.a[k * n + k] + lambda;
+            let mut d = a[k * n + k] + lambda;
             for j in 0..k {
-                // A dropped row contributes nothing (its column of L is zero).
-                if !self.dropped[j] {
-                    let lkj = self.l[k * n + j];
-                    d -= lkj * lkj * self.l[j * n + j];
+                if kept(l, j) {
+                    let lkj = l[k * n + j];
+                    d -= lkj * lkj * l[j * n + j];
                 }
             }
             if !d.is_finite() {
                 return false;
             }
             if d <= eps {
-                self.dropped[k] = true;
-                self.l[k * n + k] = f64::INFINITY;
+                l[k * n + k] = f64::INFINITY;
                 for i in k + 1..n {
-                    self.l[i * n + k] = 0.0;
+                    l[i * n + k] = 0.0;
                 }
                 continue;
             }
-            self.dropped[k] = false;
-            self.l[k * n + k] = d;
+            l[k * n + k] = d;
             for i in k + 1..n {
-                let mut v = self.a[i * n + k];
+                let mut v = a[i * n + k];
                 for j in 0..k {
-                    if !self.dropped[j] {
-                        v -= self.l[i * n + j] * self.l[k * n + j] * self.l[j * n + j];
+                    if kept(l, j) {
+                        v -= l[i * n + j] * l[k * n + j] * l[j * n + j];
                     }
                 }
-                self.l[i * n + k] = v / d;
+                l[i * n + k] = v / d;
             }
         }
         true
     }
 
+    fn l(&self) -> &[f64] {
+        &self.m[self.n * self.n..]
+    }
+
     pub fn dropped(&self) -> Vec<usize> {
-        (0..self.n).filter(|&k| self.dropped[k]).collect()
+        let (n, l) = (self.n, self.l());
+        (0..n).filter(|&k| l[k * n + k] == f64::INFINITY).collect()
     }
 
     /// Solves `G y = b` in place with the factors; dropped rows get 0.
     pub fn solve(&self, b: &mut [f64]) {
-        let n = self.n;
+        let (n, l) = (self.n, self.l());
         for i in 0..n {
             let mut v = b[i];
             for j in 0..i {
-                v -= self.l[i * n + j] * b[j];
+                v -= l[i * n + j] * b[j];
             }
             b[i] = v;
         }
         for i in 0..n {
-            b[i] = if self.dropped[i] {
-                0.0
-            } else {
-                b[i] / self.l[i * n + i]
-            };
+            let d = l[i * n + i];
+            b[i] = if d == f64::INFINITY { 0.0 } else { b[i] / d };
         }
         for i in (0..n).rev() {
             let mut v = b[i];
             for j in i + 1..n {
-                v -= self.l[j * n + i] * b[j];
+                v -= l[j * n + i] * b[j];
             }
             b[i] = v;
         }

@@ -151,7 +151,7 @@ pub(crate) enum Gram {
         g: DenseLdlt,
         contrib: Vec<(u32, u32, u32)>,
     },
-    Sparse(SparseGram),
+    Sparse(Box<SparseGram>),
 }
 
 impl Gram {
@@ -171,7 +171,7 @@ impl Gram {
             }
             return Some(Gram::Dense { g, contrib });
         }
-        SparseGram::new(nrows, Pattern::new(nrows, columns)).map(Gram::Sparse)
+        SparseGram::new(nrows, Pattern::new(nrows, columns)).map(|s| Gram::Sparse(Box::new(s)))
     }
 
     /// Computes `G` from the Jacobian values `jv`.

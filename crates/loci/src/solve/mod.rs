@@ -249,13 +249,6 @@ fn solve_values(
     // 3. Columns and components.
     let mut col_of_root = vec![u32::MAX; np];
     let mut col_root: Vec<usize> = Vec::new();
-    let col_of_param = |p: usize, col_of_root: &[u32]| -> Option<u32> {
-        if !unknown[p] || fixed[p].is_some() {
-            return None;
-        }
-        let c = col_of_root[root_of[p]];
-        (c != u32::MAX).then_some(c)
-    };
     for k in kernels {
         for &p in &k.locals {
             let p = p as usize;
@@ -265,6 +258,21 @@ fn solve_values(
             }
         }
     }
+    // The column of every parameter (`u32::MAX`: none), looked up for every slot of every
+    // kernel below.
+    let col_of: Vec<u32> = (0..np)
+        .map(|p| {
+            if unknown[p] && fixed[p].is_none() {
+                col_of_root[root_of[p]]
+            } else {
+                u32::MAX
+            }
+        })
+        .collect();
+    let col_of_param = |p: usize| -> Option<u32> {
+        let c = col_of[p];
+        (c != u32::MAX).then_some(c)
+    };
     // Constants take their (merged or fixed) starting values.
     for p in 0..np {
         if unknown[p] {
@@ -285,7 +293,7 @@ fn solve_values(
     for (ki, k) in kernels.iter().enumerate() {
         let mut first: Option<u32> = None;
         for &p in &k.locals {
-            if let Some(c) = col_of_param(p as usize, &col_of_root) {
+            if let Some(c) = col_of_param(p as usize) {
                 match first {
                     None => first = Some(c),
                     Some(f) => {
@@ -320,7 +328,7 @@ fn solve_values(
         .map(|k| {
             k.locals
                 .iter()
-                .find_map(|&p| col_of_param(p as usize, &col_of_root))
+                .find_map(|&p| col_of_param(p as usize))
                 .map_or(u32::MAX, |c| col_comp[c as usize])
         })
         .collect();
@@ -364,7 +372,7 @@ fn solve_values(
                     }
                 })
                 .collect();
-            let map = |p: usize| col_of_param(p, &col_of_root).map(|c| local[c as usize]);
+            let map = |p: usize| col_of_param(p).map(|c| local[c as usize]);
             Component::new(kernels, members, &map, cols.len(), scale)
         };
         cache.components = par::map_items(vec![(); ncomps], parallel, || (), build);
@@ -465,7 +473,7 @@ fn solve_values(
     let mut out = values;
     for p in 0..np {
         if unknown[p] {
-            out[p] = match col_of_param(p, &col_of_root) {
+            out[p] = match col_of_param(p) {
                 Some(c) => x_all[c as usize],
                 None => start[p],
             };
