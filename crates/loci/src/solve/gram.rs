@@ -239,11 +239,22 @@ impl SparseGram {
         } = pattern;
         let nnz = row_idx.len();
         let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();
+        // Equations given in a natural order (a chain, a 3D chain: each constraint meets only
+        // its neighbours) make a banded G, which factorises without fill as it stands. Its
+        // envelope (the entries from each column's first row down to the diagonal) bounds the
+        // fill; when that is small the minimum-degree ordering is skipped, and with it the
+        // permutation of G before every factorisation.
+        let envelope: usize = (0..nrows).map(|c| c - row_idx[col_ptr[c]] + 1).sum();
+        let ordering = if envelope <= 2 * nnz {
+            SymmetricOrdering::Identity
+        } else {
+            SymmetricOrdering::Amd
+        };
         let pattern = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);
         let symbolic = factorize_symbolic_cholesky(
             pattern.as_ref(),
             Side::Upper,
-            SymmetricOrdering::Amd,
+            ordering,
             CholeskySymbolicParams {
                 supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
                 ..Default::default()
