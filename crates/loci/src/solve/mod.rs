@@ -205,8 +205,12 @@ fn solve_values(
         }
     }
     // Starting value of each merged set: the mean of its dragged members if any, else of all.
+    // Sums and counts per root; the dragged ones only when something is dragged.
+    let any_dragged = is_dragged.iter().any(|&d| d);
     let mut root_of = vec![usize::MAX; np];
-    let mut acc: Vec<(f64, usize, f64, usize)> = vec![(0.0, 0, 0.0, 0); np];
+    let mut sum = vec![0.0f64; np];
+    let mut count = vec![0u32; np];
+    let mut dragged_sum: Vec<(f64, u32)> = vec![(0.0, 0); if any_dragged { np } else { 0 }];
     let n_unknown = unknown.iter().filter(|&&u| u).count();
     for p in 0..np {
         if !unknown[p] {
@@ -214,30 +218,31 @@ fn solve_values(
         }
         let r = sub.find(p);
         root_of[p] = r;
-        let a = &mut acc[r];
-        a.0 += values[p];
-        a.1 += 1;
-        if is_dragged[p] {
-            a.2 += values[p];
-            a.3 += 1;
+        sum[r] += values[p];
+        count[r] += 1;
+        if any_dragged && is_dragged[p] {
+            dragged_sum[r].0 += values[p];
+            dragged_sum[r].1 += 1;
         }
     }
-    let mut fixed = vec![None; np];
-    for p in 0..np {
-        if unknown[p] {
-            fixed[p] = sub.fixed_value(p);
-        }
-    }
+    // Fixed sets start at their value and are constants of the solve.
+    let mut fixed = vec![false; np];
     let mut start = vec![0.0; np];
     for p in 0..np {
-        if unknown[p] {
-            let a = acc[root_of[p]];
-            start[p] = match fixed[p] {
-                Some(v) => v,
-                None if a.3 > 0 => a.2 / a.3 as f64,
-                None => a.0 / a.1 as f64,
-            };
+        if !unknown[p] {
+            continue;
         }
+        let r = root_of[p];
+        start[p] = match sub.fixed_value(r) {
+            Some(v) => {
+                fixed[p] = true;
+                v
+            }
+            None if any_dragged && dragged_sum[r].1 > 0 => {
+                dragged_sum[r].0 / f64::from(dragged_sum[r].1)
+            }
+            None => sum[r] / f64::from(count[r]),
+        };
     }
     let mut root_dragged = vec![false; np];
     for p in 0..np {
@@ -252,7 +257,7 @@ fn solve_values(
     for k in kernels {
         for &p in &k.locals {
             let p = p as usize;
-            if unknown[p] && fixed[p].is_none() && col_of_root[root_of[p]] == u32::MAX {
+            if unknown[p] && !fixed[p] && col_of_root[root_of[p]] == u32::MAX {
                 col_of_root[root_of[p]] = col_root.len() as u32;
                 col_root.push(root_of[p]);
             }
@@ -262,7 +267,7 @@ fn solve_values(
     // kernel below.
     let col_of: Vec<u32> = (0..np)
         .map(|p| {
-            if unknown[p] && fixed[p].is_none() {
+            if unknown[p] && !fixed[p] {
                 col_of_root[root_of[p]]
             } else {
                 u32::MAX
