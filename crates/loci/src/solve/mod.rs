@@ -4,7 +4,7 @@
 //!    into equations with exact derivatives ([`crate::equations`]).
 //! 2. Equations `a = b` and `a = value` between parameters are removed by merging parameters.
 //! 3. The remaining equations split into independent components (connected through shared
-//!    unknowns); each is solved on its own.
+//!    unknowns); each is solved on its own, on all cores when there are many.
 //! 4. Newton steps of minimum weighted norm move the drawing as little as possible; dragged
 //!    parameters weigh more, so they move least.
 //! 5. The rank of each component's Jacobian at the end gives the degrees of freedom and the
