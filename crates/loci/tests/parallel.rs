@@ -9,11 +9,21 @@ use loci::{Config, Constraint, ConstraintKind as K, Entity, Param, System};
 /// compile and the solve are split across threads.
 fn triangles(n: u32) -> System {
     let mut s = System::new();
-    for (h, v) in [(1, 0.0), (2, 0.0), (3, 0.0), (4, 1.0), (5, 0.0), (6, 0.0), (7, 0.0)] {
+    for (h, v) in [
+        (1, 0.0),
+        (2, 0.0),
+        (3, 0.0),
+        (4, 1.0),
+        (5, 0.0),
+        (6, 0.0),
+        (7, 0.0),
+    ] {
         s.add_param(Param::new(h, 1, v)).expect("fresh");
     }
-    s.add_entity(Entity::point_3d(1, 1, [1, 2, 3])).expect("fresh");
-    s.add_entity(Entity::normal_3d(2, 1, [4, 5, 6, 7])).expect("fresh");
+    s.add_entity(Entity::point_3d(1, 1, [1, 2, 3]))
+        .expect("fresh");
+    s.add_entity(Entity::normal_3d(2, 1, [4, 5, 6, 7]))
+        .expect("fresh");
     s.add_entity(Entity::workplane(3, 1, 1, 2)).expect("fresh");
     let wp = Some(3);
     for i in 0..n {
@@ -24,12 +34,15 @@ fn triangles(n: u32) -> System {
         for (k, (x, y)) in start.into_iter().enumerate() {
             let k = k as u32;
             let wobble = f64::from((i * 7 + k * 3) % 11) * 0.01;
-            s.add_param(Param::new(p + 2 * k, 2, x + wobble)).expect("fresh");
-            s.add_param(Param::new(p + 2 * k + 1, 2, y - wobble)).expect("fresh");
+            s.add_param(Param::new(p + 2 * k, 2, x + wobble))
+                .expect("fresh");
+            s.add_param(Param::new(p + 2 * k + 1, 2, y - wobble))
+                .expect("fresh");
             s.add_entity(Entity::point_2d(e + k, 2, 3, [p + 2 * k, p + 2 * k + 1]))
                 .expect("fresh");
         }
-        s.add_entity(Entity::line(e + 3, 2, wp, e, e + 1)).expect("fresh");
+        s.add_entity(Entity::line(e + 3, 2, wp, e, e + 1))
+            .expect("fresh");
         let dist = |h, a, b, d| {
             Constraint::new(h, 2, K::PtPtDistance)
                 .in_workplane(wp)

@@ -70,7 +70,8 @@ pub(crate) fn compile_group(
     );
     let parts = parts.into_iter().collect::<Result<Vec<_>, _>>()?;
     let mut out = Compiled::default();
-    out.kernels.reserve(parts.iter().map(|p| p.kernels.len()).sum());
+    out.kernels
+        .reserve(parts.iter().map(|p| p.kernels.len()).sum());
     out.links.reserve(parts.iter().map(|p| p.links.len()).sum());
     for mut part in parts {
         out.kernels.append(&mut part.kernels);

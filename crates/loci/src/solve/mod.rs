@@ -21,9 +21,9 @@ pub use config::Config;
 pub use report::{Outcome, Report};
 
 use crate::equations::{compile_group, Link, Owner};
-use crate::par;
 use crate::error::SolveError;
 use crate::model::{GroupId, ParamId, System};
+use crate::par;
 use newton::Component;
 use substitute::Substitution;
 
