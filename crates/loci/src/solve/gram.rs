@@ -21,6 +21,7 @@ use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 
 use super::dense::DenseLdlt;
+use super::envelope::EnvelopeLdlt;
 
 /// The value a dropped pivot is replaced by.
 const DROPPED: f64 = 1e150;
@@ -145,10 +146,15 @@ impl Pattern {
 /// Components up to this many equations use the dense factorisation.
 const DENSE_MAX: usize = 24;
 
-/// `G = J Jᵀ` of one component and its rank-revealing factorisation, dense or sparse by size.
+/// `G = J Jᵀ` of one component and its rank-revealing factorisation: dense when small, by
+/// envelope when banded as it stands, sparse with a fill-reducing ordering otherwise.
 pub(crate) enum Gram {
     Dense {
         g: DenseLdlt,
+        contrib: Vec<(u32, u32, u32)>,
+    },
+    Envelope {
+        g: EnvelopeLdlt,
         contrib: Vec<(u32, u32, u32)>,
     },
     Sparse(Box<SparseGram>),
@@ -171,19 +177,47 @@ impl Gram {
             }
             return Some(Gram::Dense { g, contrib });
         }
-        SparseGram::new(nrows, Pattern::new(nrows, columns)).map(|s| Gram::Sparse(Box::new(s)))
+        let pattern = Pattern::new(nrows, columns);
+        // Equations given in a natural order (a chain, a 3D chain: each constraint meets only
+        // its neighbours) make a banded G, which factorises without fill outside its envelope
+        // (the entries from each row's first nonzero to the diagonal). When that envelope is
+        // small, no ordering or symbolic analysis is needed.
+        let first: Vec<u32> = (0..nrows)
+            .map(|c| pattern.row_idx[pattern.col_ptr[c]] as u32)
+            .collect();
+        let envelope: usize = first
+            .iter()
+            .enumerate()
+            .map(|(c, &f)| c + 1 - f as usize)
+            .sum();
+        if envelope <= 2 * pattern.row_idx.len() {
+            let g = EnvelopeLdlt::new(first);
+            let Pattern {
+                col_ptr,
+                row_idx,
+                mut contrib,
+            } = pattern;
+            // Entry `e` of the upper CSC pattern is (row_idx[e], column c): row c, column
+            // row_idx[e] of the lower envelope.
+            let mut at = vec![0u32; row_idx.len()];
+            for c in 0..nrows {
+                for e in col_ptr[c]..col_ptr[c + 1] {
+                    at[e] = g.index(c, row_idx[e]) as u32;
+                }
+            }
+            for t in &mut contrib {
+                t.0 = at[t.0 as usize];
+            }
+            return Some(Gram::Envelope { g, contrib });
+        }
+        SparseGram::new(nrows, pattern).map(|s| Gram::Sparse(Box::new(s)))
     }
 
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
         match self {
-            Gram::Dense { g, contrib } => {
-                let v = g.values_mut();
-                v.iter_mut().for_each(|x| *x = 0.0);
-                for &(e, a, b) in contrib.iter() {
-                    v[e as usize] += jv[a as usize] * jv[b as usize];
-                }
-            }
+            Gram::Dense { g, contrib } => add_products(g.values_mut(), contrib, jv),
+            Gram::Envelope { g, contrib } => add_products(g.values_mut(), contrib, jv),
             Gram::Sparse(s) => s.assemble(jv),
         }
     }
@@ -193,6 +227,7 @@ impl Gram {
     pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
         match self {
             Gram::Dense { g, .. } => g.factor(lambda, eps),
+            Gram::Envelope { g, .. } => g.factor(lambda, eps),
             Gram::Sparse(s) => s.factor(lambda, eps),
         }
     }
@@ -201,6 +236,7 @@ impl Gram {
     pub fn dropped(&self) -> Vec<usize> {
         match self {
             Gram::Dense { g, .. } => g.dropped(),
+            Gram::Envelope { g, .. } => g.dropped(),
             Gram::Sparse(s) => s.dropped(),
         }
     }
@@ -209,8 +245,17 @@ impl Gram {
     pub fn solve(&mut self, rhs: &mut [f64]) {
         match self {
             Gram::Dense { g, .. } => g.solve(rhs),
+            Gram::Envelope { g, .. } => g.solve(rhs),
             Gram::Sparse(s) => s.solve(rhs),
         }
+    }
+}
+
+/// `v = 0`, then `v[e] += jv[a] * jv[b]` for every `(e, a, b)`.
+fn add_products(v: &mut [f64], contrib: &[(u32, u32, u32)], jv: &[f64]) {
+    v.iter_mut().for_each(|x| *x = 0.0);
+    for &(e, a, b) in contrib {
+        v[e as usize] += jv[a as usize] * jv[b as usize];
     }
 }
 
@@ -239,22 +284,11 @@ impl SparseGram {
         } = pattern;
         let nnz = row_idx.len();
         let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();
-        // Equations given in a natural order (a chain, a 3D chain: each constraint meets only
-        // its neighbours) make a banded G, which factorises without fill as it stands. Its
-        // envelope (the entries from each column's first row down to the diagonal) bounds the
-        // fill; when that is small the minimum-degree ordering is skipped, and with it the
-        // permutation of G before every factorisation.
-        let envelope: usize = (0..nrows).map(|c| c - row_idx[col_ptr[c]] + 1).sum();
-        let ordering = if envelope <= 2 * nnz {
-            SymmetricOrdering::Identity
-        } else {
-            SymmetricOrdering::Amd
-        };
         let pattern = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);
         let symbolic = factorize_symbolic_cholesky(
             pattern.as_ref(),
             Side::Upper,
-            ordering,
+            SymmetricOrdering::Amd,
             CholeskySymbolicParams {
                 supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
                 ..Default::default()
@@ -283,10 +317,7 @@ impl SparseGram {
 
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
-        self.vals.iter_mut().for_each(|v| *v = 0.0);
-        for &(e, a, b) in &self.contrib {
-            self.vals[e as usize] += jv[a as usize] * jv[b as usize];
-        }
+        add_products(&mut self.vals, &self.contrib, jv);
     }
 
     /// Factorises `G + lambda I` (with `G` from the last [`Gram::assemble`]); pivots at or

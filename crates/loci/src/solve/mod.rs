@@ -12,8 +12,10 @@
 
 mod config;
 mod dense;
+mod envelope;
 pub(crate) mod gram;
 pub(crate) mod newton;
+mod plan;
 mod report;
 mod substitute;
 
@@ -25,7 +27,7 @@ use crate::error::SolveError;
 use crate::model::{GroupId, ParamId, System};
 use crate::par;
 use newton::Component;
-use substitute::Substitution;
+use plan::{substitute, Plan};
 
 /// Solves `group` of `sys` in place: parameters of the group are unknowns, all others are
 /// constants. `dragged` parameters move as little as possible.
@@ -70,6 +72,8 @@ struct Cache {
     shape: Option<(usize, usize, usize)>,
     links: Vec<Link>,
     kernels: Vec<crate::equations::Kernel>,
+    /// Merged and fixed parameters, columns and components.
+    plan: Option<Plan>,
     components: Vec<Component>,
 }
 
@@ -166,12 +170,6 @@ fn solve_values(
     let params = sys.params();
     let np = params.len();
     let mut values: Vec<f64> = params.iter().map(|p| p.val).collect();
-    let unknown: Vec<bool> = params.iter().map(|p| p.group == group).collect();
-    let mut is_dragged = vec![false; np];
-    for h in dragged {
-        let i = sys.param_index(*h).ok_or(SolveError::UnknownDragged(h.0))?;
-        is_dragged[i] = true;
-    }
     let shape = (np, sys.entities().len(), sys.constraints().len());
     if cache.shape != Some(shape) {
         *cache = Cache::default();
@@ -182,162 +180,65 @@ fn solve_values(
     } else {
         refresh(sys, &values, cache);
     }
-    let kernels = &cache.kernels;
     let tol = cfg.tolerance;
 
-    // 2. Substitution.
-    let mut sub = Substitution::new(np);
-    for c in &cache.links {
-        match *c {
-            Link::Equal { owner, a, b } => match (unknown[a], unknown[b]) {
-                (true, true) => sub.merge(a, b, owner, tol),
-                (true, false) => sub.fix(a, values[b], owner, tol),
-                (false, true) => sub.fix(b, values[a], owner, tol),
-                (false, false) => sub.constant((values[a] - values[b]).abs() <= tol, owner),
-            },
-            Link::Fix { owner, p, value } => {
-                if unknown[p] {
-                    sub.fix(p, value, owner, tol);
-                } else {
-                    sub.constant((values[p] - value).abs() <= tol, owner);
-                }
-            }
-        }
-    }
+    // 2. Substitution: which parameters merge or are fixed depends on the structure only (the
+    // plan, kept between solves); the values they take, and whether they agree, on the values.
+    let plan: &Plan = match &mut cache.plan {
+        Some(plan) => plan,
+        slot @ None => slot.insert(Plan::new(
+            sys,
+            group,
+            dragged,
+            &cache.kernels,
+            &cache.links,
+            &values,
+            tol,
+        )?),
+    };
+    let mut sub = substitute(&cache.links, &plan.unknown, &values, tol);
+    let kernels = &cache.kernels;
     // Starting value of each merged set: the mean of its dragged members if any, else of all.
-    // Sums and counts per root; the dragged ones only when something is dragged.
-    let any_dragged = is_dragged.iter().any(|&d| d);
-    let mut root_of = vec![usize::MAX; np];
     let mut sum = vec![0.0f64; np];
     let mut count = vec![0u32; np];
-    let mut dragged_sum: Vec<(f64, u32)> = vec![(0.0, 0); if any_dragged { np } else { 0 }];
-    let n_unknown = unknown.iter().filter(|&&u| u).count();
     for p in 0..np {
-        if !unknown[p] {
+        let r = plan.root_of[p];
+        if r == usize::MAX || (plan.root_dragged[r] && !plan.dragged[p]) {
             continue;
         }
-        let r = sub.find(p);
-        root_of[p] = r;
         sum[r] += values[p];
         count[r] += 1;
-        if any_dragged && is_dragged[p] {
-            dragged_sum[r].0 += values[p];
-            dragged_sum[r].1 += 1;
-        }
     }
     // Fixed sets start at their value and are constants of the solve.
-    let mut fixed = vec![false; np];
     let mut start = vec![0.0; np];
     for p in 0..np {
-        if !unknown[p] {
+        let r = plan.root_of[p];
+        if r == usize::MAX {
             continue;
         }
-        let r = root_of[p];
-        start[p] = match sub.fixed_value(r) {
-            Some(v) => {
-                fixed[p] = true;
-                v
-            }
-            None if any_dragged && dragged_sum[r].1 > 0 => {
-                dragged_sum[r].0 / f64::from(dragged_sum[r].1)
-            }
+        start[p] = match sub.fixed_value(p) {
+            Some(v) => v,
             None => sum[r] / f64::from(count[r]),
         };
+        // Constants take their (merged or fixed) starting values.
+        values[p] = start[p];
     }
-    let mut root_dragged = vec![false; np];
-    for p in 0..np {
-        if unknown[p] && is_dragged[p] {
-            root_dragged[root_of[p]] = true;
-        }
-    }
-
-    // 3. Columns and components.
-    let mut col_of_root = vec![u32::MAX; np];
-    let mut col_root: Vec<usize> = Vec::new();
-    for k in kernels {
-        for &p in &k.locals {
-            let p = p as usize;
-            if unknown[p] && !fixed[p] && col_of_root[root_of[p]] == u32::MAX {
-                col_of_root[root_of[p]] = col_root.len() as u32;
-                col_root.push(root_of[p]);
-            }
-        }
-    }
-    // The column of every parameter (`u32::MAX`: none), looked up for every slot of every
-    // kernel below.
-    let col_of: Vec<u32> = (0..np)
-        .map(|p| {
-            if unknown[p] && !fixed[p] {
-                col_of_root[root_of[p]]
-            } else {
-                u32::MAX
-            }
-        })
-        .collect();
+    let Plan {
+        unknown,
+        root_dragged,
+        col_of,
+        col_root,
+        comps,
+        local,
+        constant_kernels,
+        n_unknown,
+        ..
+    } = plan;
     let col_of_param = |p: usize| -> Option<u32> {
         let c = col_of[p];
         (c != u32::MAX).then_some(c)
     };
-    // Constants take their (merged or fixed) starting values.
-    for p in 0..np {
-        if unknown[p] {
-            values[p] = start[p];
-        }
-    }
-    let ncols = col_root.len();
-    let mut comp_of_col: Vec<u32> = (0..ncols as u32).collect();
-    fn find(v: &mut [u32], mut a: u32) -> u32 {
-        while v[a as usize] != a {
-            let g = v[v[a as usize] as usize];
-            v[a as usize] = g;
-            a = g;
-        }
-        a
-    }
-    let mut constant_kernels = Vec::new();
-    for (ki, k) in kernels.iter().enumerate() {
-        let mut first: Option<u32> = None;
-        for &p in &k.locals {
-            if let Some(c) = col_of_param(p as usize) {
-                match first {
-                    None => first = Some(c),
-                    Some(f) => {
-                        let (a, b) = (find(&mut comp_of_col, f), find(&mut comp_of_col, c));
-                        if a != b {
-                            comp_of_col[b.max(a) as usize] = a.min(b);
-                        }
-                    }
-                }
-            }
-        }
-        if first.is_none() {
-            constant_kernels.push(ki);
-        }
-    }
-    // Group kernels and columns by component, in order of first appearance, as compressed
-    // lists (two allocations, however many components).
-    let mut comp_index = vec![u32::MAX; ncols];
-    let mut ncomps = 0usize;
-    let col_comp: Vec<u32> = (0..ncols as u32)
-        .map(|c| {
-            let r = find(&mut comp_of_col, c) as usize;
-            if comp_index[r] == u32::MAX {
-                comp_index[r] = ncomps as u32;
-                ncomps += 1;
-            }
-            comp_index[r]
-        })
-        .collect();
-    let kernel_comp: Vec<u32> = kernels
-        .iter()
-        .map(|k| {
-            k.locals
-                .iter()
-                .find_map(|&p| col_of_param(p as usize))
-                .map_or(u32::MAX, |c| col_comp[c as usize])
-        })
-        .collect();
-    let comps = Groups::new(ncomps, &col_comp, &kernel_comp);
+    let ncomps = comps.col_ptr.len() - 1;
 
     // 4. Newton per component.
     let mut report = Report {
@@ -356,13 +257,6 @@ fn solve_values(
     let mut conflicting: Vec<Owner> = Vec::new();
     let mut unsatisfied: Vec<Owner> = Vec::new();
     let mut x_all: Vec<f64> = col_root.iter().map(|&r| start[r]).collect();
-    // Each column's position within its component.
-    let mut local = vec![0u32; ncols];
-    for ci in 0..ncomps {
-        for (i, &c) in comps.cols(ci).iter().enumerate() {
-            local[c] = i as u32;
-        }
-    }
     let parallel = report.equations >= par::MIN_PARALLEL && ncomps > 1;
     if cache.components.len() != ncomps {
         let build = |_: &mut (), ci: usize, _: ()| {
@@ -429,7 +323,7 @@ fn solve_values(
             unsatisfied.extend(fin.unsatisfied.iter().map(|&r| owner_of(r)));
         }
     }
-    for &ki in &constant_kernels {
+    for &ki in constant_kernels {
         let k = &kernels[ki];
         let mut xs = Vec::new();
         k.gather(&values, &mut xs);
@@ -485,54 +379,6 @@ fn solve_values(
         }
     }
     Ok((report, out))
-}
-
-/// Columns and kernels grouped by component: component `i` has columns
-/// `cols[col_ptr[i]..col_ptr[i + 1]]` and kernels `members[member_ptr[i]..member_ptr[i + 1]]`,
-/// each in ascending order.
-struct Groups {
-    col_ptr: Vec<usize>,
-    cols: Vec<usize>,
-    member_ptr: Vec<usize>,
-    members: Vec<usize>,
-}
-
-impl Groups {
-    /// From the component of each column and of each kernel (`u32::MAX`: none).
-    fn new(n: usize, col_comp: &[u32], kernel_comp: &[u32]) -> Self {
-        let bucket = |of: &[u32]| -> (Vec<usize>, Vec<usize>) {
-            let mut ptr = vec![0usize; n + 1];
-            for &c in of.iter().filter(|&&c| c != u32::MAX) {
-                ptr[c as usize + 1] += 1;
-            }
-            for i in 0..n {
-                ptr[i + 1] += ptr[i];
-            }
-            let mut fill = ptr.clone();
-            let mut items = vec![0usize; ptr[n]];
-            for (i, &c) in of.iter().enumerate().filter(|x| *x.1 != u32::MAX) {
-                items[fill[c as usize]] = i;
-                fill[c as usize] += 1;
-            }
-            (ptr, items)
-        };
-        let (col_ptr, cols) = bucket(col_comp);
-        let (member_ptr, members) = bucket(kernel_comp);
-        Self {
-            col_ptr,
-            cols,
-            member_ptr,
-            members,
-        }
-    }
-
-    fn cols(&self, i: usize) -> &[usize] {
-        &self.cols[self.col_ptr[i]..self.col_ptr[i + 1]]
-    }
-
-    fn members(&self, i: usize) -> &[usize] {
-        &self.members[self.member_ptr[i]..self.member_ptr[i + 1]]
-    }
 }
 
 /// Brings cached equations up to date with the system's current values: constraint values,

@@ -1,0 +1,211 @@
+//! An envelope (profile) LDLᵀ with dropped pivots, for Gram matrices that are banded in the
+//! order their equations come in.
+//!
+//! A chain of segments, a 3D chain or a row of fillets gives equations that each meet only
+//! their neighbours: `G = J Jᵀ` is then banded as it stands, and the fill of its LDLᵀ stays
+//! inside the envelope of each row (the entries from its first nonzero to the diagonal). So no
+//! ordering and no symbolic analysis are needed, and each row is eliminated with dot products
+//! of contiguous slices. Same contract as [`super::dense`]: rows are eliminated in order, and a
+//! row whose pivot is at or below the tolerance is dropped (its `D` is infinite, its column of
+//! `L` zero).
+
+/// `G`'s lower triangle within its envelope, and its factors in the same layout.
+pub(crate) struct EnvelopeLdlt {
+    /// Row `i` covers columns `first[i]..=i`.
+    first: Vec<u32>,
+    /// Row `i` is stored at `ptr[i]..ptr[i + 1]`, its diagonal last.
+    ptr: Vec<usize>,
+    /// `G`, row by row within the envelope.
+    a: Vec<f64>,
+    /// The unit lower factor below the diagonal, `D` on it (infinite for a dropped row).
+    l: Vec<f64>,
+    /// One row of `L D` while it is being computed.
+    u: Vec<f64>,
+}
+
+impl EnvelopeLdlt {
+    /// The envelope of rows whose first nonzero columns are `first` (each at most its row).
+    pub fn new(first: Vec<u32>) -> Self {
+        let mut ptr = Vec::with_capacity(first.len() + 1);
+        ptr.push(0usize);
+        let mut widest = 0;
+        for (i, &f) in first.iter().enumerate() {
+            let w = i + 1 - f as usize;
+            widest = widest.max(w);
+            ptr.push(ptr[i] + w);
+        }
+        let len = ptr[first.len()];
+        Self {
+            first,
+            ptr,
+            a: vec![0.0; len],
+            l: vec![0.0; len],
+            u: vec![0.0; widest],
+        }
+    }
+
+    /// The number of stored entries (the envelope's size).
+    #[cfg(test)]
+    pub fn len(&self) -> usize {
+        self.a.len()
+    }
+
+    /// Position of entry (i, j), `first[i] <= j <= i`, in [`Self::values_mut`].
+    pub fn index(&self, i: usize, j: usize) -> usize {
+        self.ptr[i] + j - self.first[i] as usize
+    }
+
+    pub fn values_mut(&mut self) -> &mut [f64] {
+        &mut self.a
+    }
+
+    /// Factorises `G + lambda I`; pivots at or below `eps` are dropped. Returns false when a
+    /// pivot is not finite.
+    pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
+        let n = self.first.len();
+        for i in 0..n {
+            let fi = self.first[i] as usize;
+            let (start, end) = (self.ptr[i], self.ptr[i + 1]);
+            let w = end - start - 1;
+            let (done, row) = self.l.split_at_mut(start);
+            let a = &self.a[start..end];
+            let u = &mut self.u[..w];
+            // u_k = (L D)[i][k] = G[i][k] - sum over m < k of (L D)[i][m] L[k][m].
+            for t in 0..w {
+                let k = fi + t;
+                let fk = self.first[k] as usize;
+                let lo = fi.max(fk);
+                let lk = &done[self.ptr[k] + lo - fk..self.ptr[k] + k - fk];
+                let ui = &u[lo - fi..t];
+                let s: f64 = ui.iter().zip(lk).map(|(x, y)| x * y).sum();
+                u[t] = a[t] - s;
+            }
+            let mut d = a[w] + lambda;
+            for t in 0..w {
+                let k = fi + t;
+                let dk = done[self.ptr[k + 1] - 1];
+                let lik = if dk == f64::INFINITY { 0.0 } else { u[t] / dk };
+                row[t] = lik;
+                d -= u[t] * lik;
+            }
+            if !d.is_finite() {
+                return false;
+            }
+            row[w] = if d <= eps { f64::INFINITY } else { d };
+        }
+        true
+    }
+
+    /// The rows whose pivots were dropped in the last factorisation, ascending.
+    pub fn dropped(&self) -> Vec<usize> {
+        (0..self.first.len())
+            .filter(|&i| self.l[self.ptr[i + 1] - 1] == f64::INFINITY)
+            .collect()
+    }
+
+    /// Solves `G y = b` in place with the factors; dropped rows get 0.
+    pub fn solve(&self, b: &mut [f64]) {
+        let n = self.first.len();
+        for i in 0..n {
+            let fi = self.first[i] as usize;
+            let row = &self.l[self.ptr[i]..self.ptr[i + 1] - 1];
+            let s: f64 = row.iter().zip(&b[fi..i]).map(|(x, y)| x * y).sum();
+            b[i] -= s;
+        }
+        for i in 0..n {
+            let d = self.l[self.ptr[i + 1] - 1];
+            b[i] = if d == f64::INFINITY { 0.0 } else { b[i] / d };
+        }
+        // A dropped row's column of L is zero, so it stays at 0.
+        for i in (0..n).rev() {
+            let fi = self.first[i] as usize;
+            let yi = b[i];
+            if yi == 0.0 {
+                continue;
+            }
+            let row = &self.l[self.ptr[i]..self.ptr[i + 1] - 1];
+            for (x, l) in b[fi..i].iter_mut().zip(row) {
+                *x -= l * yi;
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::dense::DenseLdlt;
+    use super::*;
+
+    /// A banded symmetric `G = J Jᵀ` from a chain-like `J` with a dependent row, factorised both
+    /// ways.
+    fn both(j: &[Vec<f64>], lambda: f64) -> (EnvelopeLdlt, DenseLdlt) {
+        let m = j.len();
+        let dot = |a: usize, b: usize| j[a].iter().zip(&j[b]).map(|(x, y)| x * y).sum::<f64>();
+        let first: Vec<u32> = (0..m)
+            .map(|i| (0..=i).find(|&k| dot(i, k) != 0.0).unwrap_or(i) as u32)
+            .collect();
+        let mut e = EnvelopeLdlt::new(first.clone());
+        let mut d = DenseLdlt::new(m);
+        for i in 0..m {
+            for k in first[i] as usize..=i {
+                let (ie, id) = (e.index(i, k), d.index(i, k));
+                e.values_mut()[ie] = dot(i, k);
+                d.values_mut()[id] = dot(i, k);
+            }
+        }
+        assert!(e.factor(lambda, 1e-10));
+        assert!(d.factor(lambda, 1e-10));
+        (e, d)
+    }
+
+    fn chain_jacobian() -> Vec<Vec<f64>> {
+        // Rows meeting only their neighbours; row 4 = row 2 + row 3 (dependent).
+        vec![
+            vec![1.0, 0.5, 0.0, 0.0, 0.0, 0.0],
+            vec![0.0, 1.0, -0.3, 0.0, 0.0, 0.0],
+            vec![0.0, 0.0, 0.7, 1.0, 0.0, 0.0],
+            vec![0.0, 0.0, 0.0, 0.2, 1.0, 0.0],
+            vec![0.0, 0.0, 0.7, 1.2, 1.0, 0.0],
+            vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0],
+        ]
+    }
+
+    #[test]
+    fn matches_the_dense_factorisation_and_drops_the_dependent_row() {
+        let (mut e, d) = both(&chain_jacobian(), 0.0);
+        assert_eq!(e.dropped(), vec![4]);
+        assert_eq!(d.dropped(), vec![4]);
+        let rhs = [1.0, -2.0, 0.5, 3.0, 7.0, -1.0];
+        let (mut ye, mut yd) = (rhs, rhs);
+        e.solve(&mut ye);
+        d.solve(&mut yd);
+        for (a, b) in ye.iter().zip(&yd) {
+            assert!((a - b).abs() < 1e-12, "{ye:?} vs {yd:?}");
+        }
+        assert_eq!(ye[4], 0.0);
+        // Each row from its first nonzero to the diagonal: 1 + 2 + 2 + 2 + 4 + 3 entries.
+        assert_eq!(e.len(), 14);
+        e.values_mut().iter_mut().for_each(|v| *v = f64::NAN);
+        assert!(!e.factor(0.0, 1e-10));
+    }
+
+    #[test]
+    fn damped_factorisation_solves_the_shifted_system() {
+        let j = chain_jacobian();
+        let (e, _) = both(&j, 0.5);
+        assert!(e.dropped().is_empty());
+        // (G + 0.5 I) y = b, checked by multiplying back.
+        let b = [1.0, 2.0, 3.0, 4.0, 5.0, 6.0];
+        let mut y = b;
+        e.solve(&mut y);
+        for i in 0..6 {
+            let gy: f64 = (0..6)
+                .map(|k| {
+                    let g: f64 = j[i].iter().zip(&j[k]).map(|(x, z)| x * z).sum();
+                    (g + if i == k { 0.5 } else { 0.0 }) * y[k]
+                })
+                .sum();
+            assert!((gy - b[i]).abs() < 1e-12, "row {i}: {gy} vs {}", b[i]);
+        }
+    }
+}
