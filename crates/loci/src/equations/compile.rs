@@ -93,7 +93,7 @@ fn compile_entities(
     out: &mut Vec<Kernel>,
 ) -> Result<(), ModelError> {
     for e in r.sys.entities() {
-        if e.group != group {
+        if e.group != group || !implicit(&e.kind) {
             continue;
         }
         let me = ObjectId::Entity(e.h);
@@ -177,6 +177,18 @@ fn compile_entities(
     Ok(())
 }
 
+/// Whether an entity of this kind carries an implicit equation of its own.
+fn implicit(kind: &EntityKind) -> bool {
+    matches!(
+        kind,
+        EntityKind::NormalIn3d { .. }
+            | EntityKind::ArcOfCircle { .. }
+            | EntityKind::PointNTrans { .. }
+            | EntityKind::PointNRotTrans { .. }
+            | EntityKind::NormalNRot { .. }
+    )
+}
+
 /// Compiles `group` with every equation as general residuals, parameter equalities included,
 /// so that each row belongs to one constraint (or entity) that can be named: the diagnosis
 /// works on these. With `references`, only the reference (driven) constraints are compiled
@@ -215,7 +227,7 @@ fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec
     let rows = eq.rows(x);
     Kernel {
         owner,
-        locals: l.params,
+        locals: l.params.to_vec(),
         eq,
         rows,
     }
@@ -270,11 +282,13 @@ pub(crate) fn resolve_constraint(
             }
         }
     }
-    let mut ents = Vec::new();
-    for (i, h) in [c.entity_a, c.entity_b, c.entity_c, c.entity_d]
-        .into_iter()
-        .enumerate()
-    {
+    let handles = [c.entity_a, c.entity_b, c.entity_c, c.entity_d];
+    let mut ents = Vec::with_capacity(
+        (0..4)
+            .filter(|&i| handles[i].is_some() && used(i + 2))
+            .count(),
+    );
+    for (i, h) in handles.into_iter().enumerate() {
         if let (Some(h), true) = (h, used(i + 2)) {
             ents.push(r.entity(owner, h, &mut l)?);
         }

@@ -3,6 +3,7 @@
 use crate::error::ModelError;
 use crate::geom::{Quat, Scalar, Vec3};
 use crate::model::{EntityId, EntityKind, ObjectId, System};
+use smallvec::SmallVec;
 
 /// Index into an equation's local parameter list.
 pub(crate) type Slot = u16;
@@ -47,17 +48,18 @@ pub(crate) enum Ent {
 /// The parameters one equation reads, as positions in [`System::params`].
 #[derive(Clone, Debug)]
 pub(crate) struct Locals {
-    pub params: Vec<u32>,
+    pub params: SmallVec<[u32; 16]>,
     /// The workplane resolved last, already in these locals: the points of one constraint
     /// nearly always share it, and it is seven parameters to look up.
     last_frame: Option<Frame>,
 }
 
 impl Default for Locals {
-    /// Room for a constraint on two lines in a workplane, so the list is allocated once.
+    /// Room inline for a constraint on two lines in a workplane: most equations gather their
+    /// parameters with no allocation (those that become parameter equalities need none).
     fn default() -> Self {
         Self {
-            params: Vec::with_capacity(16),
+            params: SmallVec::new(),
             last_frame: None,
         }
     }

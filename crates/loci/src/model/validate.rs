@@ -169,7 +169,13 @@ impl System {
                 )?;
             }
             EntityKind::LineSegment { .. } | EntityKind::Cubic { .. } => {
-                for (field, r) in e.kind.references() {
+                let ps: &[EntityId] = match &e.kind {
+                    EntityKind::LineSegment { points } => points,
+                    EntityKind::Cubic { points } => points,
+                    _ => &[],
+                };
+                const FIELDS: [&str; 4] = ["points[0]", "points[1]", "points[2]", "points[3]"];
+                for (field, &r) in FIELDS.iter().zip(ps) {
                     self.expect(owner, field, r, point, "a point")?;
                 }
             }

@@ -1,10 +1,8 @@
-//! A dense LDLᵀ with dropped pivots, for the small components most sketches split into.
+//! A plain dense LDLᵀ with dropped pivots: the reference the envelope factorisation
+//! ([`super::envelope`]) is tested against.
 //!
-//! Same contract as the sparse factorisation in [`super::gram`]: rows are eliminated in order,
-//! and a row whose pivot (its squared distance from the span of the rows before it) is at or
-//! below the tolerance is dropped from the solve. For a handful of equations the set-up cost of a
-//! general sparse factorisation (ordering, symbolic analysis, workspace) is many times the
-//! arithmetic, and we need to know which pivots were dropped, so this is written out here.
+//! Rows are eliminated in order, and a row whose pivot (its squared distance from the span of
+//! the rows before it) is at or below the tolerance is dropped from the solve.
 
 /// `G` as a dense symmetric matrix (lower triangle used) and its factors.
 pub(crate) struct DenseLdlt {

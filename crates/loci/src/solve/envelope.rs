@@ -5,9 +5,10 @@
 //! their neighbours: `G = J Jᵀ` is then banded as it stands, and the fill of its LDLᵀ stays
 //! inside the envelope of each row (the entries from its first nonzero to the diagonal). So no
 //! ordering and no symbolic analysis are needed, and each row is eliminated with dot products
-//! of contiguous slices. Same contract as [`super::dense`]: rows are eliminated in order, and a
-//! row whose pivot is at or below the tolerance is dropped (its `D` is infinite, its column of
-//! `L` zero).
+//! of contiguous slices. Small components of any shape use it too: their envelope is at most
+//! the whole triangle. Rows are eliminated in order, and a row whose pivot (its squared distance
+//! from the span of the rows before it) is at or below the tolerance is dropped (its `D` is
+//! infinite, its column of `L` zero).
 
 /// `G`'s lower triangle within its envelope, and its factors in the same layout.
 pub(crate) struct EnvelopeLdlt {

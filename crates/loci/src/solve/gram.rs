@@ -20,7 +20,6 @@ use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 
-use super::dense::DenseLdlt;
 use super::envelope::EnvelopeLdlt;
 
 /// The value a dropped pivot is replaced by.
@@ -143,16 +142,14 @@ impl Pattern {
     }
 }
 
-/// Components up to this many equations use the dense factorisation.
+/// Components up to this many equations are factorised within their envelope whatever its
+/// shape: it holds no more than the whole triangle, and costs no more than a dense
+/// factorisation.
 const DENSE_MAX: usize = 24;
 
-/// `G = J Jᵀ` of one component and its rank-revealing factorisation: dense when small, by
-/// envelope when banded as it stands, sparse with a fill-reducing ordering otherwise.
+/// `G = J Jᵀ` of one component and its rank-revealing factorisation: within its envelope when
+/// small or banded as it stands, sparse with a fill-reducing ordering otherwise.
 pub(crate) enum Gram {
-    Dense {
-        g: DenseLdlt,
-        contrib: Vec<(u32, u32, u32)>,
-    },
     Envelope {
         g: EnvelopeLdlt,
         contrib: Vec<(u32, u32, u32)>,
@@ -165,17 +162,26 @@ impl Gram {
     /// `(row, index into J's values)`.
     pub fn new(nrows: usize, columns: &Columns) -> Option<Self> {
         if nrows <= DENSE_MAX {
-            // G[i][j] gathers the products of the entries that rows i and j have in each column.
-            let g = DenseLdlt::new(nrows);
-            let mut contrib = Vec::new();
+            // Straight from the columns of J: rows i and j meet in G where they share a column.
+            let mut first: Vec<u32> = (0..nrows as u32).collect();
             for col in columns.iter() {
-                for (k, &(i, a)) in col.iter().enumerate() {
-                    for &(j, b) in &col[..=k] {
+                if let Some(&(lo, _)) = col.iter().min_by_key(|e| e.0) {
+                    for &(i, _) in col {
+                        first[i as usize] = first[i as usize].min(lo);
+                    }
+                }
+            }
+            let g = EnvelopeLdlt::new(first);
+            let pairs = columns.iter().map(|c| c.len() * (c.len() + 1) / 2).sum();
+            let mut contrib = Vec::with_capacity(pairs);
+            for col in columns.iter() {
+                for &(i, a) in col {
+                    for &(j, b) in col.iter().filter(|e| e.0 <= i) {
                         contrib.push((g.index(i as usize, j as usize) as u32, a, b));
                     }
                 }
             }
-            return Some(Gram::Dense { g, contrib });
+            return Some(Gram::Envelope { g, contrib });
         }
         let pattern = Pattern::new(nrows, columns);
         // Equations given in a natural order (a chain, a 3D chain: each constraint meets only
@@ -216,7 +222,6 @@ impl Gram {
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
         match self {
-            Gram::Dense { g, contrib } => add_products(g.values_mut(), contrib, jv),
             Gram::Envelope { g, contrib } => add_products(g.values_mut(), contrib, jv),
             Gram::Sparse(s) => s.assemble(jv),
         }
@@ -226,7 +231,6 @@ impl Gram {
     /// factorisation failed numerically.
     pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
         match self {
-            Gram::Dense { g, .. } => g.factor(lambda, eps),
             Gram::Envelope { g, .. } => g.factor(lambda, eps),
             Gram::Sparse(s) => s.factor(lambda, eps),
         }
@@ -235,7 +239,6 @@ impl Gram {
     /// The rows whose pivots were dropped in the last factorisation, ascending.
     pub fn dropped(&self) -> Vec<usize> {
         match self {
-            Gram::Dense { g, .. } => g.dropped(),
             Gram::Envelope { g, .. } => g.dropped(),
             Gram::Sparse(s) => s.dropped(),
         }
@@ -244,7 +247,6 @@ impl Gram {
     /// Solves `G y = rhs` in place with the last factorisation.
     pub fn solve(&mut self, rhs: &mut [f64]) {
         match self {
-            Gram::Dense { g, .. } => g.solve(rhs),
             Gram::Envelope { g, .. } => g.solve(rhs),
             Gram::Sparse(s) => s.solve(rhs),
         }

@@ -11,6 +11,7 @@
 //!    redundant or conflicting constraints.
 
 mod config;
+#[cfg(test)]
 mod dense;
 mod envelope;
 pub(crate) mod gram;
@@ -184,19 +185,24 @@ fn solve_values(
 
     // 2. Substitution: which parameters merge or are fixed depends on the structure only (the
     // plan, kept between solves); the values they take, and whether they agree, on the values.
-    let plan: &Plan = match &mut cache.plan {
-        Some(plan) => plan,
-        slot @ None => slot.insert(Plan::new(
-            sys,
-            group,
-            dragged,
-            &cache.kernels,
-            &cache.links,
-            &values,
-            tol,
-        )?),
+    let (plan, mut sub) = match &mut cache.plan {
+        Some(plan) => {
+            let sub = substitute(&cache.links, &plan.unknown, &values, tol);
+            (&*plan, sub)
+        }
+        slot @ None => {
+            let (plan, sub) = Plan::new(
+                sys,
+                group,
+                dragged,
+                &cache.kernels,
+                &cache.links,
+                &values,
+                tol,
+            )?;
+            (&*slot.insert(plan), sub)
+        }
     };
-    let mut sub = substitute(&cache.links, &plan.unknown, &values, tol);
     let kernels = &cache.kernels;
     // Starting value of each merged set: the mean of its dragged members if any, else of all.
     let mut sum = vec![0.0f64; np];

@@ -36,7 +36,7 @@ pub(super) fn substitute(
     values: &[f64],
     tol: f64,
 ) -> Substitution {
-    let mut sub = Substitution::new(unknown.len());
+    let mut sub = Substitution::new(unknown.len(), links.len());
     for c in links {
         match *c {
             Link::Equal { owner, a, b } => match (unknown[a], unknown[b]) {
@@ -58,6 +58,7 @@ pub(super) fn substitute(
 }
 
 impl Plan {
+    /// The plan, and the substitution it was read from (at `values`).
     pub fn new(
         sys: &System,
         group: GroupId,
@@ -66,7 +67,7 @@ impl Plan {
         links: &[Link],
         values: &[f64],
         tol: f64,
-    ) -> Result<Self, SolveError> {
+    ) -> Result<(Self, Substitution), SolveError> {
         let params = sys.params();
         let np = params.len();
         let unknown: Vec<bool> = params.iter().map(|p| p.group == group).collect();
@@ -178,7 +179,7 @@ impl Plan {
                 local[c] = i as u32;
             }
         }
-        Ok(Self {
+        let plan = Self {
             unknown,
             dragged: is_dragged,
             root_of,
@@ -189,7 +190,8 @@ impl Plan {
             local,
             constant_kernels,
             n_unknown,
-        })
+        };
+        Ok((plan, sub))
     }
 }
 

@@ -29,12 +29,13 @@ pub(crate) struct Substitution {
 }
 
 impl Substitution {
-    pub fn new(n: usize) -> Self {
+    /// `n` parameters, with room for `links` merges.
+    pub fn new(n: usize, links: usize) -> Self {
         Self {
             parent: (0..n as u32).collect(),
             fixed: vec![None; n],
             head: vec![NONE; n],
-            arcs: Vec::new(),
+            arcs: Vec::with_capacity(links),
             redundant: Vec::new(),
             conflicts: Vec::new(),
             removed: 0,
@@ -164,7 +165,7 @@ mod tests {
 
     #[test]
     fn cycle_is_redundant_with_its_whole_loop() {
-        let mut s = Substitution::new(4);
+        let mut s = Substitution::new(4, 0);
         s.merge(0, 1, c(1), 1e-9);
         s.merge(1, 2, c(2), 1e-9);
         s.merge(3, 3, c(9), 1e-9);
@@ -176,7 +177,7 @@ mod tests {
 
     #[test]
     fn two_values_for_one_set_conflict() {
-        let mut s = Substitution::new(3);
+        let mut s = Substitution::new(3, 0);
         s.fix(0, 1.0, c(1), 1e-9);
         s.merge(0, 1, c(2), 1e-9);
         s.fix(1, 2.0, c(3), 1e-9);

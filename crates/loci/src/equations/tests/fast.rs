@@ -56,7 +56,7 @@ fn resolved(fx: &Fx, c: &Constraint, choice: u8) -> (Equation, Vec<u32>) {
     fx.sys.validate().expect("the fixture builds a valid model");
     let (mut eq, l) = resolve_constraint(&Resolver::new(&fx.sys), c).expect("resolves");
     eq.choice = choice;
-    (eq, l.params)
+    (eq, l.params.to_vec())
 }
 
 /// The written-out path applies to `eq`, and gives the residual of the generic `f64`

@@ -513,7 +513,7 @@ pub(super) fn compile(sys: &System, c: &Constraint) -> One {
     let (eq, l) = resolve_constraint(&Resolver::new(sys), c).expect("constraint resolves");
     let mut one = One {
         eq,
-        locals: l.params,
+        locals: l.params.to_vec(),
     };
     let x = one.x(sys);
     one.eq.choose(&x);
