@@ -18,30 +18,29 @@ pub(crate) struct EnvelopeLdlt {
     ptr: Vec<usize>,
     /// `G`, row by row within the envelope.
     a: Vec<f64>,
-    /// The unit lower factor below the diagonal, `D` on it (infinite for a dropped row).
+    /// The unit lower factor below the diagonal, `D` on it.
     l: Vec<f64>,
-    /// One row of `L D` while it is being computed.
-    u: Vec<f64>,
+    /// `1 / D`, and 0 for a dropped row: its column of `L` and its part of the solution
+    /// vanish without a branch.
+    dinv: Vec<f64>,
 }
 
 impl EnvelopeLdlt {
     /// The envelope of rows whose first nonzero columns are `first` (each at most its row).
     pub fn new(first: Vec<u32>) -> Self {
-        let mut ptr = Vec::with_capacity(first.len() + 1);
+        let n = first.len();
+        let mut ptr = Vec::with_capacity(n + 1);
         ptr.push(0usize);
-        let mut widest = 0;
         for (i, &f) in first.iter().enumerate() {
-            let w = i + 1 - f as usize;
-            widest = widest.max(w);
-            ptr.push(ptr[i] + w);
+            ptr.push(ptr[i] + i + 1 - f as usize);
         }
-        let len = ptr[first.len()];
+        let len = ptr[n];
         Self {
             first,
             ptr,
             a: vec![0.0; len],
             l: vec![0.0; len],
-            u: vec![0.0; widest],
+            dinv: vec![0.0; n],
         }
     }
 
@@ -68,31 +67,39 @@ impl EnvelopeLdlt {
             let fi = self.first[i] as usize;
             let (start, end) = (self.ptr[i], self.ptr[i + 1]);
             let w = end - start - 1;
-            let (done, row) = self.l.split_at_mut(start);
-            let a = &self.a[start..end];
-            let u = &mut self.u[..w];
-            // u_k = (L D)[i][k] = G[i][k] - sum over m < k of (L D)[i][m] L[k][m].
+            let (done, rest) = self.l.split_at_mut(start);
+            let row = &mut rest[..=w];
+            row.copy_from_slice(&self.a[start..end]);
+            // First (L D)[i][k] = G[i][k] - sum over m < k of (L D)[i][m] L[k][m], in place.
             for t in 0..w {
                 let k = fi + t;
                 let fk = self.first[k] as usize;
-                let lo = fi.max(fk);
-                let lk = &done[self.ptr[k] + lo - fk..self.ptr[k] + k - fk];
-                let ui = &u[lo - fi..t];
-                let s: f64 = ui.iter().zip(lk).map(|(x, y)| x * y).sum();
-                u[t] = a[t] - s;
+                // Columns both rows cover: from max(fi, fk) to k - 1.
+                let (lo, from) = if fk > fi {
+                    (fk - fi, self.ptr[k])
+                } else {
+                    (0, self.ptr[k] + fi - fk)
+                };
+                let (head, tail) = row.split_at_mut(t);
+                let s: f64 = head[lo..]
+                    .iter()
+                    .zip(&done[from..from + t - lo])
+                    .map(|(x, y)| x * y)
+                    .sum();
+                tail[0] -= s;
             }
-            let mut d = a[w] + lambda;
-            for t in 0..w {
-                let k = fi + t;
-                let dk = done[self.ptr[k + 1] - 1];
-                let lik = if dk == f64::INFINITY { 0.0 } else { u[t] / dk };
-                row[t] = lik;
-                d -= u[t] * lik;
+            // Then L[i][k] = (L D)[i][k] / D[k], and D[i].
+            let mut d = row[w] + lambda;
+            for (t, v) in row[..w].iter_mut().enumerate() {
+                let u = *v;
+                *v = u * self.dinv[fi + t];
+                d -= u * *v;
             }
             if !d.is_finite() {
                 return false;
             }
-            row[w] = if d <= eps { f64::INFINITY } else { d };
+            row[w] = d;
+            self.dinv[i] = if d <= eps { 0.0 } else { 1.0 / d };
         }
         true
     }
@@ -100,7 +107,7 @@ impl EnvelopeLdlt {
     /// The rows whose pivots were dropped in the last factorisation, ascending.
     pub fn dropped(&self) -> Vec<usize> {
         (0..self.first.len())
-            .filter(|&i| self.l[self.ptr[i + 1] - 1] == f64::INFINITY)
+            .filter(|&i| self.dinv[i] == 0.0)
             .collect()
     }
 
@@ -113,11 +120,9 @@ impl EnvelopeLdlt {
             let s: f64 = row.iter().zip(&b[fi..i]).map(|(x, y)| x * y).sum();
             b[i] -= s;
         }
-        for i in 0..n {
-            let d = self.l[self.ptr[i + 1] - 1];
-            b[i] = if d == f64::INFINITY { 0.0 } else { b[i] / d };
+        for (v, dinv) in b.iter_mut().zip(&self.dinv) {
+            *v *= dinv;
         }
-        // A dropped row's column of L is zero, so it stays at 0.
         for i in (0..n).rev() {
             let fi = self.first[i] as usize;
             let yi = b[i];

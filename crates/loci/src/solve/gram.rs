@@ -21,6 +21,7 @@ use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
 use faer::{Conj, MatMut, Par, Side};
 
 use super::envelope::EnvelopeLdlt;
+use super::order;
 
 /// The value a dropped pivot is replaced by.
 const DROPPED: f64 = 1e150;
@@ -142,6 +143,37 @@ impl Pattern {
     }
 }
 
+impl Pattern {
+    /// Symmetric adjacency lists of the rows of `G`, diagonal left out.
+    fn adjacency(&self, nrows: usize) -> (Vec<usize>, Vec<u32>) {
+        let mut ptr = vec![0usize; nrows + 1];
+        for c in 0..nrows {
+            for &r in &self.row_idx[self.col_ptr[c]..self.col_ptr[c + 1]] {
+                if r != c {
+                    ptr[r + 1] += 1;
+                    ptr[c + 1] += 1;
+                }
+            }
+        }
+        for i in 0..nrows {
+            ptr[i + 1] += ptr[i];
+        }
+        let mut fill = ptr.clone();
+        let mut adj = vec![0u32; ptr[nrows]];
+        for c in 0..nrows {
+            for &r in &self.row_idx[self.col_ptr[c]..self.col_ptr[c + 1]] {
+                if r != c {
+                    adj[fill[r]] = c as u32;
+                    fill[r] += 1;
+                    adj[fill[c]] = r as u32;
+                    fill[c] += 1;
+                }
+            }
+        }
+        (ptr, adj)
+    }
+}
+
 /// Components up to this many equations are factorised within their envelope whatever its
 /// shape: it holds no more than the whole triangle, and costs no more than a dense
 /// factorisation.
@@ -150,10 +182,7 @@ const DENSE_MAX: usize = 24;
 /// `G = J Jᵀ` of one component and its rank-revealing factorisation: within its envelope when
 /// small or banded as it stands, sparse with a fill-reducing ordering otherwise.
 pub(crate) enum Gram {
-    Envelope {
-        g: EnvelopeLdlt,
-        contrib: Vec<(u32, u32, u32)>,
-    },
+    Banded(Box<Banded>),
     Sparse(Box<SparseGram>),
 }
 
@@ -161,60 +190,38 @@ impl Gram {
     /// Builds the structure from the nonzeros of `J`, given column by column as lists of
     /// `(row, index into J's values)`.
     pub fn new(nrows: usize, columns: &Columns) -> Option<Self> {
-        if nrows <= DENSE_MAX {
-            // Straight from the columns of J: rows i and j meet in G where they share a column.
-            let mut first: Vec<u32> = (0..nrows as u32).collect();
-            for col in columns.iter() {
-                if let Some(&(lo, _)) = col.iter().min_by_key(|e| e.0) {
-                    for &(i, _) in col {
-                        first[i as usize] = first[i as usize].min(lo);
-                    }
-                }
-            }
-            let g = EnvelopeLdlt::new(first);
-            let pairs = columns.iter().map(|c| c.len() * (c.len() + 1) / 2).sum();
-            let mut contrib = Vec::with_capacity(pairs);
-            for col in columns.iter() {
-                for &(i, a) in col {
-                    for &(j, b) in col.iter().filter(|e| e.0 <= i) {
-                        contrib.push((g.index(i as usize, j as usize) as u32, a, b));
-                    }
-                }
-            }
-            return Some(Gram::Envelope { g, contrib });
-        }
-        let pattern = Pattern::new(nrows, columns);
+        // Products of two entries of a column of J, each adding to one entry of G.
+        let pairs: usize = columns.iter().map(|c| c.len() * (c.len() + 1) / 2).sum();
         // Equations given in a natural order (a chain, a 3D chain: each constraint meets only
-        // its neighbours) make a banded G, which factorises without fill outside its envelope
-        // (the entries from each row's first nonzero to the diagonal). When that envelope is
-        // small, no ordering or symbolic analysis is needed.
-        let first: Vec<u32> = (0..nrows)
-            .map(|c| pattern.row_idx[pattern.col_ptr[c]] as u32)
-            .collect();
-        let envelope: usize = first
-            .iter()
-            .enumerate()
-            .map(|(c, &f)| c + 1 - f as usize)
-            .sum();
-        if envelope <= 2 * pattern.row_idx.len() {
-            let g = EnvelopeLdlt::new(first);
-            let Pattern {
-                col_ptr,
-                row_idx,
-                mut contrib,
-            } = pattern;
-            // Entry `e` of the upper CSC pattern is (row_idx[e], column c): row c, column
-            // row_idx[e] of the lower envelope.
-            let mut at = vec![0u32; row_idx.len()];
-            for c in 0..nrows {
-                for e in col_ptr[c]..col_ptr[c + 1] {
-                    at[e] = g.index(c, row_idx[e]) as u32;
-                }
-            }
-            for t in &mut contrib {
-                t.0 = at[t.0 as usize];
-            }
-            return Some(Gram::Envelope { g, contrib });
+        // its neighbours) make a banded G, whose LDLᵀ fills nothing outside its envelope (each
+        // row from the first row it meets to the diagonal): when that is about the size of G
+        // itself (counted as the products that make it), no ordering or symbolic analysis is
+        // needed. Small components are factorised within their envelope whatever its shape.
+        let first = envelope(nrows, columns, None);
+        if nrows <= DENSE_MAX || envelope_len(&first) <= 2 * pairs {
+            return Some(Gram::Banded(Box::new(Banded::new(
+                first, pairs, columns, None,
+            ))));
+        }
+        // Equations in another order (implicit ones last, a chain given shuffled) may still
+        // band once renumbered.
+        let pattern = Pattern::new(nrows, columns);
+        let order = {
+            let (ptr, adj) = pattern.adjacency(nrows);
+            order::reverse_cuthill_mckee(nrows, &ptr, &adj)
+        };
+        let mut pos = vec![0u32; nrows];
+        for (p, &r) in order.iter().enumerate() {
+            pos[r as usize] = p as u32;
+        }
+        let first = envelope(nrows, columns, Some(&pos));
+        if envelope_len(&first) <= 2 * pairs {
+            return Some(Gram::Banded(Box::new(Banded::new(
+                first,
+                pairs,
+                columns,
+                Some((order, pos)),
+            ))));
         }
         SparseGram::new(nrows, pattern).map(|s| Gram::Sparse(Box::new(s)))
     }
@@ -222,7 +229,7 @@ impl Gram {
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
         match self {
-            Gram::Envelope { g, contrib } => add_products(g.values_mut(), contrib, jv),
+            Gram::Banded(b) => add_products(b.g.values_mut(), &b.contrib, jv),
             Gram::Sparse(s) => s.assemble(jv),
         }
     }
@@ -231,7 +238,7 @@ impl Gram {
     /// factorisation failed numerically.
     pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
         match self {
-            Gram::Envelope { g, .. } => g.factor(lambda, eps),
+            Gram::Banded(b) => b.g.factor(lambda, eps),
             Gram::Sparse(s) => s.factor(lambda, eps),
         }
     }
@@ -239,7 +246,7 @@ impl Gram {
     /// The rows whose pivots were dropped in the last factorisation, ascending.
     pub fn dropped(&self) -> Vec<usize> {
         match self {
-            Gram::Envelope { g, .. } => g.dropped(),
+            Gram::Banded(b) => b.dropped(),
             Gram::Sparse(s) => s.dropped(),
         }
     }
@@ -247,8 +254,106 @@ impl Gram {
     /// Solves `G y = rhs` in place with the last factorisation.
     pub fn solve(&mut self, rhs: &mut [f64]) {
         match self {
-            Gram::Envelope { g, .. } => g.solve(rhs),
+            Gram::Banded(b) => b.solve(rhs),
             Gram::Sparse(s) => s.solve(rhs),
+        }
+    }
+}
+
+/// The first row each row of `G` meets, with rows at positions `pos` (or as they are).
+fn envelope(nrows: usize, columns: &Columns, pos: Option<&[u32]>) -> Vec<u32> {
+    let at = |r: u32| pos.map_or(r, |p| p[r as usize]);
+    let mut first: Vec<u32> = (0..nrows as u32).collect();
+    for col in columns.iter() {
+        if let Some(lo) = col.iter().map(|e| at(e.0)).min() {
+            for &(i, _) in col {
+                let p = at(i) as usize;
+                first[p] = first[p].min(lo);
+            }
+        }
+    }
+    first
+}
+
+/// The number of entries in the envelope whose rows start at `first`.
+fn envelope_len(first: &[u32]) -> usize {
+    first
+        .iter()
+        .enumerate()
+        .map(|(c, &f)| c + 1 - f as usize)
+        .sum()
+}
+
+/// `G` factorised within its envelope, its rows possibly renumbered.
+pub(crate) struct Banded {
+    g: EnvelopeLdlt,
+    /// `(entry of the envelope, entry of J, entry of J)`: `G[e] += J[a] * J[b]`.
+    contrib: Vec<(u32, u32, u32)>,
+    /// The row at each position and the position of each row, when renumbered.
+    order: Option<(Vec<u32>, Vec<u32>)>,
+    /// A right-hand side in position order.
+    tmp: Vec<f64>,
+}
+
+impl Banded {
+    fn new(
+        first: Vec<u32>,
+        pairs: usize,
+        columns: &Columns,
+        order: Option<(Vec<u32>, Vec<u32>)>,
+    ) -> Self {
+        let n = first.len();
+        let g = EnvelopeLdlt::new(first);
+        let pos = order.as_ref().map(|o| &o.1);
+        let at = |r: u32| pos.map_or(r, |p| p[r as usize]) as usize;
+        let mut contrib = Vec::with_capacity(pairs);
+        for col in columns.iter() {
+            for &(i, a) in col {
+                let pi = at(i);
+                for &(j, b) in col {
+                    let pj = at(j);
+                    if pj <= pi {
+                        contrib.push((g.index(pi, pj) as u32, a, b));
+                    }
+                }
+            }
+        }
+        let tmp = if order.is_some() {
+            vec![0.0; n]
+        } else {
+            Vec::new()
+        };
+        Self {
+            g,
+            contrib,
+            order,
+            tmp,
+        }
+    }
+
+    fn dropped(&self) -> Vec<usize> {
+        let mut d = self.g.dropped();
+        if let Some((order, _)) = &self.order {
+            for p in &mut d {
+                *p = order[*p] as usize;
+            }
+            d.sort_unstable();
+        }
+        d
+    }
+
+    fn solve(&mut self, rhs: &mut [f64]) {
+        match &self.order {
+            None => self.g.solve(rhs),
+            Some((order, _)) => {
+                for (t, &r) in self.tmp.iter_mut().zip(order) {
+                    *t = rhs[r as usize];
+                }
+                self.g.solve(&mut self.tmp);
+                for (t, &r) in self.tmp.iter().zip(order) {
+                    rhs[r as usize] = *t;
+                }
+            }
         }
     }
 }

@@ -16,6 +16,7 @@ mod dense;
 mod envelope;
 pub(crate) mod gram;
 pub(crate) mod newton;
+mod order;
 mod plan;
 mod report;
 mod substitute;
