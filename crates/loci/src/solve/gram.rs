@@ -143,35 +143,44 @@ impl Pattern {
     }
 }
 
-impl Pattern {
-    /// Symmetric adjacency lists of the rows of `G`, diagonal left out.
-    fn adjacency(&self, nrows: usize) -> (Vec<usize>, Vec<u32>) {
-        let mut ptr = vec![0usize; nrows + 1];
-        for c in 0..nrows {
-            for &r in &self.row_idx[self.col_ptr[c]..self.col_ptr[c + 1]] {
-                if r != c {
-                    ptr[r + 1] += 1;
-                    ptr[c + 1] += 1;
-                }
-            }
+/// Symmetric adjacency lists of the rows of `G` (rows of `J` sharing a column), diagonal left
+/// out.
+fn adjacency(nrows: usize, columns: &Columns) -> (Vec<usize>, Vec<u32>) {
+    // The columns of each row of J.
+    let mut row_ptr = vec![0usize; nrows + 1];
+    for col in columns.iter() {
+        for &(r, _) in col {
+            row_ptr[r as usize + 1] += 1;
         }
-        for i in 0..nrows {
-            ptr[i + 1] += ptr[i];
-        }
-        let mut fill = ptr.clone();
-        let mut adj = vec![0u32; ptr[nrows]];
-        for c in 0..nrows {
-            for &r in &self.row_idx[self.col_ptr[c]..self.col_ptr[c + 1]] {
-                if r != c {
-                    adj[fill[r]] = c as u32;
-                    fill[r] += 1;
-                    adj[fill[c]] = r as u32;
-                    fill[c] += 1;
-                }
-            }
-        }
-        (ptr, adj)
     }
+    for i in 0..nrows {
+        row_ptr[i + 1] += row_ptr[i];
+    }
+    let mut fill = row_ptr.clone();
+    let mut row_cols = vec![0u32; row_ptr[nrows]];
+    for (c, col) in columns.iter().enumerate() {
+        for &(r, _) in col {
+            row_cols[fill[r as usize]] = c as u32;
+            fill[r as usize] += 1;
+        }
+    }
+    let mut mark = vec![u32::MAX; nrows];
+    let mut ptr = Vec::with_capacity(nrows + 1);
+    ptr.push(0usize);
+    let mut adj = Vec::new();
+    for i in 0..nrows {
+        mark[i] = i as u32;
+        for &c in &row_cols[row_ptr[i]..row_ptr[i + 1]] {
+            for &(j, _) in columns.col(c as usize) {
+                if mark[j as usize] != i as u32 {
+                    mark[j as usize] = i as u32;
+                    adj.push(j);
+                }
+            }
+        }
+        ptr.push(adj.len());
+    }
+    (ptr, adj)
 }
 
 /// Components up to this many equations are factorised within their envelope whatever its
@@ -205,9 +214,8 @@ impl Gram {
         }
         // Equations in another order (implicit ones last, a chain given shuffled) may still
         // band once renumbered.
-        let pattern = Pattern::new(nrows, columns);
         let order = {
-            let (ptr, adj) = pattern.adjacency(nrows);
+            let (ptr, adj) = adjacency(nrows, columns);
             order::reverse_cuthill_mckee(nrows, &ptr, &adj)
         };
         let mut pos = vec![0u32; nrows];
@@ -223,6 +231,7 @@ impl Gram {
                 Some((order, pos)),
             ))));
         }
+        let pattern = Pattern::new(nrows, columns);
         SparseGram::new(nrows, pattern).map(|s| Gram::Sparse(Box::new(s)))
     }
 

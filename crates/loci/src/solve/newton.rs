@@ -60,6 +60,10 @@ const NONMONOTONE: usize = 4;
 /// A relative decrease of the merit smaller than this is no progress.
 const STALL: f64 = 1e-6;
 
+/// A step no larger than this (relative to the unknown) leaves the Jacobian as it was for the
+/// rank test.
+const TINY_STEP: f64 = 1e-6;
+
 /// A component ready to solve repeatedly.
 pub(crate) struct Component {
     pub blocks: Vec<Block>,
@@ -462,6 +466,22 @@ impl Component {
             }
             alpha_prev = alpha;
             x.copy_from_slice(&xt);
+            // A full Newton step that lands within tolerance and moved the unknowns by next to
+            // nothing ends the solve without another Jacobian: the rank and the dependencies
+            // are read from the factorisation this step was taken with, at a point closer than
+            // rounding would tell apart.
+            if damping.is_none()
+                && alpha == 1.0
+                && rt.iter().all(|v| v.abs() <= cfg.tolerance)
+                && dx
+                    .iter()
+                    .zip(x.iter())
+                    .all(|(d, v)| d.abs() <= TINY_STEP * (1.0 + v.abs()))
+            {
+                r.copy_from_slice(rt);
+                converged = true;
+                break;
+            }
         }
         let mut fin = Finish {
             converged,
