@@ -438,3 +438,39 @@ fn solving_twice_is_bit_identical() {
         assert_eq!((again.outcome, again.dof), (rx.outcome, rx.dof));
     }
 }
+
+#[test]
+fn a_long_conflict_is_named_whole_by_the_rank_test_and_checked_by_diagnosis() {
+    // Twelve horizontal unit segments in a row, pinned at the start, with their ends 13
+    // apart: no arrangement reaches that far, so the twelve lengths and the long distance
+    // conflict (thirteen members, more than the solve checks by default); the horizontals
+    // play no part.
+    let mut s = Sketch::new();
+    let pts: Vec<u32> = (0..13)
+        .map(|i| s.point(301 + i, 2, [i as f64 * 1.02, 0.05 * (i % 3) as f64]))
+        .collect();
+    s.on_points(2, K::WhereDragged, pts[0], 0, 0.0);
+    let mut conflict = Vec::new();
+    for (i, w) in pts.windows(2).enumerate() {
+        let l = s.line(401 + i as u32, 2, w[0], w[1]);
+        s.on_entities(2, K::Horizontal, l, 0, 0.0);
+        conflict.push(s.on_points(2, K::PtPtDistance, w[0], w[1], 1.0));
+    }
+    conflict.push(s.on_points(2, K::PtPtDistance, pts[0], pts[12], 13.0));
+    let mut quick = s.sys.clone();
+    let rep = solve(&mut quick, 2.into(), &[], &Config::default()).unwrap();
+    assert_eq!(rep.outcome, Outcome::Inconsistent);
+    assert_eq!(
+        rep.failed,
+        ids(&conflict),
+        "the rank test names the whole loop"
+    );
+    // Checked member by member, the same thirteen are each needed.
+    let cfg = Config::default().with_verify_conflicts_up_to(usize::MAX);
+    let rep = solve(&mut s.sys.clone(), 2.into(), &[], &cfg).unwrap();
+    assert_eq!(rep.failed, ids(&conflict));
+    let d = s.sys.diagnose(2).unwrap();
+    assert_eq!(d.conflicting.len(), 1);
+    assert!(d.conflicting[0].verified);
+    assert_eq!(d.conflicting[0].members.len(), 13);
+}

@@ -69,7 +69,15 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
         Some(r) => circuits::circuits(&eqs, &lin, r, cfg),
         None => Vec::new(),
     };
-    let mut conflicting = conflict_sets(&eqs, &lin, &circuits, &values, report.outcome, cfg);
+    let mut conflicting = conflict_sets(
+        &eqs,
+        &lin,
+        &circuits,
+        &values,
+        report.outcome,
+        cfg,
+        usize::MAX,
+    );
     let mut redundant = redundant::redundant_sets(&eqs, &lin, &circuits, cfg.rank_tolerance);
     let mut outcome = report.outcome;
     if outcome == Outcome::DidNotConverge && !conflicting.is_empty() {
@@ -175,7 +183,15 @@ pub(crate) fn name_conflicts(
         Some(mut r) => circuits::circuits(&eqs, &lin, &mut r, cfg),
         None => return,
     };
-    let sets = conflict_sets(&eqs, &lin, &circuits, values, report.outcome, cfg);
+    let sets = conflict_sets(
+        &eqs,
+        &lin,
+        &circuits,
+        values,
+        report.outcome,
+        cfg,
+        cfg.verify_conflicts_up_to,
+    );
     if sets.is_empty() {
         return;
     }
@@ -194,7 +210,8 @@ pub(crate) fn name_conflicts(
 }
 
 /// Minimal conflict sets from the conflicting circuits; for a solve that stopped at a
-/// least-squares minimum with no dependent row, from the rows with residuals left.
+/// least-squares minimum with no dependent row, from the rows with residuals left. Circuits of
+/// more than `verify_up_to` members are taken as they are, unverified.
 fn conflict_sets(
     eqs: &Equations,
     lin: &Linear,
@@ -202,6 +219,7 @@ fn conflict_sets(
     values: &[f64],
     outcome: Outcome,
     cfg: &Config,
+    verify_up_to: usize,
 ) -> Vec<ConflictSet> {
     let members_of = |rows: &mut dyn Iterator<Item = usize>| {
         let mut m: Vec<Member> = rows
@@ -231,7 +249,11 @@ fn conflict_sets(
     let mut out: Vec<ConflictSet> = Vec::new();
     let mut done = HashSet::new();
     for c in candidates {
-        let (members, verified) = minimal::minimise(eqs, &c, values, cfg);
+        let (members, verified) = if c.len() <= verify_up_to {
+            minimal::minimise(eqs, &c, values, cfg)
+        } else {
+            (c, false)
+        };
         // A set read off a least-squares minimum is only a conflict if it checks out.
         if (verified || circuits.iter().any(|c| c.conflicting)) && done.insert(members.clone()) {
             out.push(ConflictSet { members, verified });

@@ -18,6 +18,14 @@ pub struct Config {
     pub rank_tolerance: f64,
     /// Whether to name the redundant, conflicting or unsatisfied constraints. Default `true`.
     pub find_failed: bool,
+    /// A conflict the solve names is first found by the rank test: a set of constraints any
+    /// one of which, removed, restores the rank where the solve stopped (SolveSpace's
+    /// meaning). Sets of at most this many members are then checked and shrunk to a minimal
+    /// set that cannot hold, by solving subsets of them (one small solve per member); larger
+    /// ones are reported as found, so that a long loop of constraints in conflict does not
+    /// cost a solve per member while the user drags. [`crate::diagnose`] always checks.
+    /// Default `8`.
+    pub verify_conflicts_up_to: usize,
 }
 
 impl Default for Config {
@@ -28,6 +36,7 @@ impl Default for Config {
             dragged_scale: 0.05,
             rank_tolerance: 1e-10,
             find_failed: true,
+            verify_conflicts_up_to: 8,
         }
     }
 }
@@ -65,6 +74,13 @@ impl Config {
     #[must_use]
     pub fn with_find_failed(mut self, v: bool) -> Self {
         self.find_failed = v;
+        self
+    }
+
+    /// Sets [`Config::verify_conflicts_up_to`].
+    #[must_use]
+    pub fn with_verify_conflicts_up_to(mut self, v: usize) -> Self {
+        self.verify_conflicts_up_to = v;
         self
     }
 
