@@ -37,3 +37,33 @@ where
         .map(|(i, t)| f(&mut s, i, t))
         .collect()
 }
+
+/// Drops `items`, spread over the cores when there are many: freeing the thousands of small
+/// components of a large solve costs about as much as building them did.
+pub(crate) fn discard<T: Send>(items: Vec<T>) {
+    #[cfg(feature = "parallel")]
+    if items.len() >= MIN_PARALLEL {
+        use rayon::prelude::*;
+        items.into_par_iter().for_each(drop);
+        return;
+    }
+    drop(items);
+}
+
+/// `check` on every item; the error of the first failing item in item order (the same error
+/// whatever the number of threads). Large lists are checked in parallel chunks.
+pub(crate) fn first_error<T: Sync, E: Send>(
+    items: &[T],
+    check: impl Fn(&T) -> Result<(), E> + Sync + Send,
+) -> Result<(), E> {
+    #[cfg(feature = "parallel")]
+    if items.len() >= 4 * MIN_PARALLEL {
+        use rayon::prelude::*;
+        let chunks: Vec<Result<(), E>> = items
+            .par_chunks(MIN_PARALLEL)
+            .map(|c| c.iter().try_for_each(&check))
+            .collect();
+        return chunks.into_iter().find(Result::is_err).unwrap_or(Ok(()));
+    }
+    items.iter().try_for_each(check)
+}

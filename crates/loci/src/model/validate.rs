@@ -24,13 +24,8 @@ impl System {
                 });
             }
         }
-        for e in self.entities() {
-            self.validate_entity(e.h)?;
-        }
-        for c in self.constraints() {
-            self.validate_constraint(c)?;
-        }
-        Ok(())
+        crate::par::first_error(self.entities(), |e| self.validate_entity(e.h))?;
+        crate::par::first_error(self.constraints(), |c| self.validate_constraint(c))
     }
 
     fn entity_of(

@@ -49,7 +49,11 @@ pub fn solve(
 ) -> Result<Report, SolveError> {
     cfg.check()?;
     sys.validate()?;
-    solve_cached(sys, group, dragged, cfg, &mut Cache::default())
+    let mut cache = Cache::default();
+    let report = solve_cached(sys, group, dragged, cfg, &mut cache);
+    par::discard(std::mem::take(&mut cache.components));
+    par::discard(std::mem::take(&mut cache.kernels));
+    report
 }
 
 /// Solves `group` without touching `sys`: the report, and the value of every parameter where
