@@ -34,6 +34,12 @@ fn rows(fx: &Fx, eq: &Equation, locals: &[u32], unknowns: Unknowns) -> (Option<R
         .collect();
     let (mut r1, mut j1) = ([0.0], vec![0.0; active.len()]);
     let written = fast::jacobian(eq, &x, &active, &mut r1, &mut j1).then_some((r1[0], j1));
+    // The residual alone, as the line search evaluates it: the same, to the last bit.
+    let mut r3 = [f64::NAN];
+    assert_eq!(eq.residuals_fast(&x, &mut r3), written.is_some());
+    if let Some((r, _)) = &written {
+        assert_eq!(r3[0].to_bits(), r.to_bits());
+    }
     // The generic equation may have more rows (in space): the first is compared.
     let mut out = Rows::new();
     eq.eval(&x, &mut out);
