@@ -56,6 +56,9 @@ pub struct Options {
     /// See [`Config::rank_tolerance`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rank_tolerance: Option<f64>,
+    /// See [`Config::verify_conflicts_up_to`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub verify_conflicts_up_to: Option<usize>,
 }
 
 impl SolveRequest {
@@ -69,6 +72,9 @@ impl SolveRequest {
             .with_max_iterations(o.max_iterations.unwrap_or(d.max_iterations))
             .with_dragged_scale(o.dragged_scale.unwrap_or(d.dragged_scale))
             .with_rank_tolerance(o.rank_tolerance.unwrap_or(d.rank_tolerance))
+            .with_verify_conflicts_up_to(
+                o.verify_conflicts_up_to.unwrap_or(d.verify_conflicts_up_to),
+            )
             .with_find_failed(self.calculate_failed)
     }
 }
