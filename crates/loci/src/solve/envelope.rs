@@ -71,22 +71,20 @@ impl EnvelopeLdlt {
             let row = &mut rest[..=w];
             row.copy_from_slice(&self.a[start..end]);
             // First (L D)[i][k] = G[i][k] - sum over m < k of (L D)[i][m] L[k][m], in place.
-            for t in 0..w {
-                let k = fi + t;
-                let fk = self.first[k] as usize;
-                // Columns both rows cover: from max(fi, fk) to k - 1.
+            for (t, (&fk, &pk)) in self.first[fi..i].iter().zip(&self.ptr[fi..i]).enumerate() {
+                // Columns both rows cover: from max(fi, fk) to k - 1, with k = fi + t.
+                let fk = fk as usize;
                 let (lo, from) = if fk > fi {
-                    (fk - fi, self.ptr[k])
+                    (fk - fi, pk)
                 } else {
-                    (0, self.ptr[k] + fi - fk)
+                    (0, pk + fi - fk)
                 };
-                let (head, tail) = row.split_at_mut(t);
-                let s: f64 = head[lo..]
+                let s: f64 = row[lo..t]
                     .iter()
                     .zip(&done[from..from + t - lo])
                     .map(|(x, y)| x * y)
                     .sum();
-                tail[0] -= s;
+                row[t] -= s;
             }
             // Then L[i][k] = (L D)[i][k] / D[k], and D[i].
             let mut d = row[w] + lambda;
