@@ -395,6 +395,8 @@ fn compile_constraint(
         }
         _ => {}
     }
+    let mut eq = eq;
+    let l = super::planar::compact(&mut eq, &l).unwrap_or(l);
     out.kernels.push(kernel(owner, l, eq, values, x));
     Ok(())
 }

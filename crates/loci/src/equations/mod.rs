@@ -12,6 +12,7 @@ mod curves;
 mod fast;
 mod lines;
 mod orientation;
+mod planar;
 mod points;
 pub(crate) mod refs;
 

@@ -491,3 +491,72 @@ fn points_outside_the_workplane_take_the_generic_path() {
         assert!(both(&fx, &c, 0).0.is_none());
     }
 }
+
+/// A planar equation without its workplane's parameters gives the same residual and the same
+/// derivatives (to the last bit) over the `n` locals it keeps.
+fn assert_compacts(fx: &Fx, c: &Constraint, choice: u8, n: usize) {
+    let (mut eq, l) = resolve_constraint(&Resolver::new(&fx.sys), c).expect("resolves");
+    eq.choice = choice;
+    let mut small = eq.clone();
+    let kept = super::super::planar::compact(&mut small, &l).expect("planar");
+    assert_eq!(kept.params.len(), n);
+    let params = fx.sys.params();
+    let values = |ls: &[u32]| -> Vec<f64> { ls.iter().map(|&p| params[p as usize].val).collect() };
+    let (x, xk) = (values(&l.params), values(&kept.params));
+    let (mut r, mut rk) = (Rows::new(), Rows::new());
+    eq.eval(&x, &mut r);
+    small.eval(&xk, &mut rk);
+    assert_eq!(r.v[0].to_bits(), rk.v[0].to_bits());
+    let all: Vec<u16> = (0..x.len() as u16).collect();
+    let allk: Vec<u16> = (0..xk.len() as u16).collect();
+    let (mut j, mut jk) = (vec![0.0; x.len()], vec![0.0; xk.len()]);
+    let (mut r1, mut r2) = ([0.0], [0.0]);
+    eq.jacobian_active(&x, &all, &mut r1, &mut j);
+    small.jacobian_active(&xk, &allk, &mut r2, &mut jk);
+    assert_eq!(r1[0].to_bits(), r2[0].to_bits());
+    for (s, &p) in l.params.iter().enumerate() {
+        match kept.params.iter().position(|&q| q == p) {
+            Some(k) => assert_eq!(j[s].to_bits(), jk[k].to_bits(), "slot {s}"),
+            // The workplane's own parameters: the equation does not depend on them.
+            None => assert_eq!(j[s], 0.0, "slot {s}"),
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn planar_distance_and_angle_drop_the_workplane(
+        p in proptest::collection::vec(coord(), 4),
+        d in 0.0..30.0f64,
+        deg in 0.0..180.0f64,
+        shared: bool,
+        choice in 0u8..2,
+    ) {
+        let mut fx = Fx::new();
+        let pts: Vec<u32> = p.iter().map(|&uv| fx.p2(MOVING, fx.wp, uv)).collect();
+        let c = fx.con(K::PtPtDistance, Form::Plane).with_points(pts[0], pts[1]).with_val(d);
+        assert_compacts(&fx, &c, 0, 4);
+        let second_start = if shared { pts[0] } else { pts[2] };
+        let l0 = fx.line_of(MOVING, Form::Plane, pts[0], pts[1]);
+        let l1 = fx.line_of(MOVING, Form::Plane, second_start, pts[3]);
+        let c = fx
+            .con(K::Angle, Form::Plane)
+            .with_entities([l0, l1, 0, 0])
+            .with_val(deg);
+        assert_compacts(&fx, &c, choice, if shared { 6 } else { 8 });
+    }
+}
+
+#[test]
+fn equations_that_read_the_workplane_keep_it() {
+    // A distance between a point of the workplane and one in space reads the workplane.
+    let mut fx = Fx::new();
+    let a = fx.p2(MOVING, fx.wp, [1.0, 2.0]);
+    let b = fx.p3(MOVING, [3.0, -1.0, 2.0]);
+    let c = fx
+        .con(K::PtPtDistance, Form::Plane)
+        .with_points(a, b)
+        .with_val(4.0);
+    let (mut eq, l) = resolve_constraint(&Resolver::new(&fx.sys), &c).expect("resolves");
+    assert!(super::super::planar::compact(&mut eq, &l).is_none());
+}
