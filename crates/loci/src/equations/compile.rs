@@ -172,6 +172,8 @@ fn compile_entities(
             choice: 0,
             target,
         };
+        let mut eq = eq;
+        let l = super::planar::compact(&mut eq, &l).unwrap_or(l);
         out.push(kernel(Owner::Entity(e.h), l, eq, values, x));
     }
     Ok(())
