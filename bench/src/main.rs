@@ -157,6 +157,7 @@ fn real_main() -> Result<()> {
     m.insert("command".into(), command.clone());
     m.insert("reps".into(), settings.reps.to_string());
     m.insert("budget_s".into(), settings.budget_s.to_string());
+    m.insert("rounds".into(), settings.rounds.to_string());
     m.insert("limit_s".into(), settings.limit.as_secs_f64().to_string());
     m.insert(
         "wall_s".into(),

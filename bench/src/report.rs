@@ -231,7 +231,10 @@ pub fn markdown(r: &Results, command: &str) -> String {
          SolveSpace through a C program over Debian's libslvs and through PyPI `slvs` in a venv, \
          PlaneGCS through node. Times are the solve call alone (building the problem in the \
          solver's API is timed separately, below), the median of up to {} runs; runs stop early \
-         once the solves add up to {} s. A worker still running after {} s is killed (timeout).\n\
+         once the solves add up to {} s. Problems a solver solves in under {} ms are timed in {} \
+         such rounds, every solver in turn, and the median is taken over all of them, so that a \
+         burst of load on the machine does not fall on one solver alone. A worker still running \
+         after {} s is killed (timeout).\n\
          - Each returned answer is checked by the harness itself (`bench/src/check.rs`): every \
          constraint, fixed point and arc radius is measured from the returned coordinates, and \
          a largest residual of 1e-6 or more makes the answer *wrong*, whatever the solver said.\n\
@@ -241,6 +244,8 @@ pub fn markdown(r: &Results, command: &str) -> String {
          - Ratios are peer time / loci time: above 1, loci is faster.\n",
         meta("reps"),
         meta("budget_s"),
+        crate::compare::ROUND_MAX_MS,
+        meta("rounds"),
         meta("limit_s")
     );
     headline(&mut o, r);
