@@ -81,6 +81,8 @@ struct Cache {
     /// Merged and fixed parameters, columns and components.
     plan: Option<Plan>,
     components: Vec<Component>,
+    /// Newton's work vectors, kept for the next solve on this thread.
+    scratch: newton::Scratch,
 }
 
 /// A reusable solver for one group: the first solve compiles the equations, splits them into
@@ -296,12 +298,20 @@ fn solve_values(
         work.push((comp, x));
         rest = tail;
     }
-    let finishes = par::map_items(
-        work,
-        parallel,
-        newton::Scratch::default,
-        |scratch, _, (comp, x)| comp.solve(kernels, x, &values, cfg, scratch),
-    );
+    let finishes: Vec<newton::Finish> = if parallel {
+        par::map_items(
+            work,
+            true,
+            newton::Scratch::default,
+            |scratch, _, (comp, x)| comp.solve(kernels, x, &values, cfg, scratch),
+        )
+    } else {
+        // On this thread, with the work vectors of the last solve: a re-solve allocates none.
+        let scratch = &mut cache.scratch;
+        work.into_iter()
+            .map(|(comp, x)| comp.solve(kernels, x, &values, cfg, scratch))
+            .collect()
+    };
     for (ci, fin) in finishes.into_iter().enumerate() {
         let comp = &cache.components[ci];
         report.iterations = report.iterations.max(fin.iterations);

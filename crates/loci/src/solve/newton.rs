@@ -297,19 +297,22 @@ impl Component {
             xs,
             jl,
         } = scratch;
+        // Every entry is written before it is read, so vectors of the right length from an
+        // earlier solve are used as they are.
         for (v, n) in [
             (&mut *r, m),
             (&mut *jv, self.nnz),
             (&mut *jn, self.nnz),
             (&mut *inv, m),
             (&mut *y, m),
+            (&mut *dx, ncols),
+            (&mut *xt, ncols),
+            (&mut *rt, m),
         ] {
-            v.clear();
-            v.resize(n, 0.0);
-        }
-        for (v, n) in [(&mut *dx, ncols), (&mut *xt, ncols), (&mut *rt, m)] {
-            v.clear();
-            v.resize(n, 0.0);
+            if v.len() != n {
+                v.clear();
+                v.resize(n, 0.0);
+            }
         }
         self.gather_all(kernels, x, values, xs);
         let xs = &mut xs[..];
