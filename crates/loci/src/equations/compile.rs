@@ -316,6 +316,20 @@ fn compile_constraint(
     x: &mut Vec<f64>,
     out: &mut Compiled,
 ) -> Result<(), ModelError> {
+    if super::direct::links(r.sys, c, values, out) {
+        return Ok(());
+    }
+    compile_resolved(r, c, values, x, out)
+}
+
+/// [`compile_constraint`] by resolving the constraint, whatever it is.
+pub(super) fn compile_resolved(
+    r: &Resolver<'_>,
+    c: &Constraint,
+    values: &[f64],
+    x: &mut Vec<f64>,
+    out: &mut Compiled,
+) -> Result<(), ModelError> {
     let (eq, l) = resolve_constraint(r, c)?;
     let owner = Owner::Constraint(c.h);
     let p = |s: u16| l.params[s as usize] as usize;

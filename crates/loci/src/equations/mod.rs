@@ -9,6 +9,7 @@
 mod circles;
 mod compile;
 mod curves;
+mod direct;
 mod fast;
 mod lines;
 mod orientation;

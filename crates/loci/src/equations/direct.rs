@@ -1,0 +1,170 @@
+//! The commonest constraints of a sketch read straight from the model: a horizontal or vertical
+//! line, two coincident points, a dragged point, all of them in the constraint's workplane,
+//! are equalities between parameters (or a parameter and its value) and become substitution
+//! links without resolving the workplane or building an equation. Anything else, including
+//! every case that could be an error, takes the general path.
+
+use super::compile::{Compiled, Link};
+use super::Owner;
+use crate::model::{Constraint, ConstraintKind, EntityId, EntityKind, System};
+
+/// The `(u, v)` parameter positions of point `h` when it is a point of workplane `wp`.
+fn uv(sys: &System, h: Option<EntityId>, wp: EntityId) -> Option<[usize; 2]> {
+    let e = sys.entity(h?)?;
+    match &e.kind {
+        EntityKind::PointIn2d { params } if e.workplane == Some(wp) => {
+            Some([sys.param_index(params[0])?, sys.param_index(params[1])?])
+        }
+        _ => None,
+    }
+}
+
+/// Adds the links of `c` to `out` when it is one of the simple equalities; false (and nothing
+/// added) otherwise.
+pub(super) fn links(sys: &System, c: &Constraint, values: &[f64], out: &mut Compiled) -> bool {
+    use ConstraintKind as K;
+    let Some(wp) = c.workplane else {
+        return false;
+    };
+    if !matches!(
+        sys.entity(wp).map(|e| &e.kind),
+        Some(EntityKind::Workplane { .. })
+    ) {
+        return false;
+    }
+    let owner = Owner::Constraint(c.h);
+    match c.kind {
+        K::Horizontal | K::Vertical => {
+            let (a, b) = match c.entity_a {
+                Some(l) => match sys.entity(l).map(|e| &e.kind) {
+                    Some(EntityKind::LineSegment { points }) => {
+                        (uv(sys, Some(points[0]), wp), uv(sys, Some(points[1]), wp))
+                    }
+                    _ => return false,
+                },
+                None => (uv(sys, c.pt_a, wp), uv(sys, c.pt_b, wp)),
+            };
+            let (Some(a), Some(b)) = (a, b) else {
+                return false;
+            };
+            let i = usize::from(c.kind == K::Horizontal);
+            out.links.push(Link::Equal {
+                owner,
+                a: a[i],
+                b: b[i],
+            });
+            true
+        }
+        K::PointsCoincident => {
+            let (Some(a), Some(b)) = (uv(sys, c.pt_a, wp), uv(sys, c.pt_b, wp)) else {
+                return false;
+            };
+            for i in 0..2 {
+                out.links.push(Link::Equal {
+                    owner,
+                    a: a[i],
+                    b: b[i],
+                });
+            }
+            true
+        }
+        K::WhereDragged => {
+            let Some(a) = uv(sys, c.pt_a, wp) else {
+                return false;
+            };
+            for p in a {
+                out.links.push(Link::Fix {
+                    owner,
+                    p,
+                    value: values[p],
+                });
+            }
+            true
+        }
+        _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::compile::{compile_resolved, Compiled};
+    use super::super::refs::Resolver;
+    use super::links;
+    use crate::model::{Constraint, ConstraintKind as K, Entity, Param, System};
+
+    /// A workplane with three points and a line in it, a point of another workplane, and a
+    /// point in space.
+    fn sketch() -> System {
+        let mut s = System::new();
+        let mut h = 0u32;
+        let mut param = |s: &mut System, v: f64| {
+            h += 1;
+            s.add_param(Param::new(h, 1, v)).expect("fresh param");
+            h
+        };
+        let o = [param(&mut s, 0.0), param(&mut s, 0.0), param(&mut s, 0.0)];
+        let q = [
+            param(&mut s, 1.0),
+            param(&mut s, 0.0),
+            param(&mut s, 0.0),
+            param(&mut s, 0.0),
+        ];
+        let mut pts = Vec::new();
+        for v in [[1.0, 2.0], [3.0, 4.5], [-1.0, 0.5], [7.0, 8.0]] {
+            pts.push([param(&mut s, v[0]), param(&mut s, v[1])]);
+        }
+        let p3 = [param(&mut s, 1.0), param(&mut s, 1.0), param(&mut s, 1.0)];
+        let ents = [
+            Entity::point_3d(100, 1, o),
+            Entity::normal_3d(101, 1, q),
+            Entity::workplane(102, 1, 100, 101),
+            Entity::workplane(103, 1, 100, 101),
+            Entity::point_2d(110, 1, 102, pts[0]),
+            Entity::point_2d(111, 1, 102, pts[1]),
+            Entity::point_2d(112, 1, 102, pts[2]),
+            Entity::point_2d(113, 1, 103, pts[3]),
+            Entity::point_3d(114, 1, p3),
+            Entity::line(120, 1, Some(102), 110, 111),
+            Entity::line(121, 1, Some(102), 110, 113),
+        ];
+        for e in ents {
+            s.add_entity(e).expect("fresh entity");
+        }
+        s
+    }
+
+    #[test]
+    fn direct_links_are_those_of_the_resolved_constraint() {
+        let s = sketch();
+        let values: Vec<f64> = s.params().iter().map(|p| p.val).collect();
+        let r = Resolver::new(&s);
+        let on = |h, kind, wp: u32| Constraint::new(h, 1, kind).in_workplane(Some(wp));
+        let cases = [
+            (
+                on(1, K::Horizontal, 102).with_entities([120, 0, 0, 0]),
+                true,
+            ),
+            (on(2, K::Vertical, 102).with_entities([120, 0, 0, 0]), true),
+            (on(3, K::Horizontal, 102).with_points(111, 112), true),
+            (on(4, K::PointsCoincident, 102).with_points(110, 112), true),
+            (on(5, K::WhereDragged, 102).with_points(111, 0), true),
+            // A point of another workplane, a point in space, a line leaving the workplane,
+            // or the other workplane: the general path decides.
+            (on(6, K::PointsCoincident, 102).with_points(110, 113), false),
+            (on(7, K::PointsCoincident, 102).with_points(110, 114), false),
+            (on(8, K::Vertical, 102).with_entities([121, 0, 0, 0]), false),
+            (on(9, K::WhereDragged, 103).with_points(111, 0), false),
+        ];
+        for (c, direct) in cases {
+            let (mut a, mut b) = (Compiled::default(), Compiled::default());
+            assert_eq!(links(&s, &c, &values, &mut a), direct, "{:?}", c.kind);
+            compile_resolved(&r, &c, &values, &mut Vec::new(), &mut b).expect("compiles");
+            if direct {
+                assert_eq!(format!("{:?}", a.links), format!("{:?}", b.links));
+                assert!(b.kernels.is_empty());
+            } else {
+                assert!(a.links.is_empty());
+            }
+        }
+    }
+}
