@@ -76,24 +76,7 @@ struct Pattern {
 impl Pattern {
     /// From the nonzeros of `J`, given column by column as `(row, index into J's values)`.
     fn new(nrows: usize, columns: &Columns) -> Self {
-        // Rows of J with their columns: row i -> [(column, index into J's values)].
-        let mut row_ptr = vec![0usize; nrows + 1];
-        for col in columns.iter() {
-            for &(r, _) in col {
-                row_ptr[r as usize + 1] += 1;
-            }
-        }
-        for i in 0..nrows {
-            row_ptr[i + 1] += row_ptr[i];
-        }
-        let mut fill = row_ptr.clone();
-        let mut row_entries = vec![(0u32, 0u32); row_ptr[nrows]];
-        for (c, col) in columns.iter().enumerate() {
-            for &(r, a) in col {
-                row_entries[fill[r as usize]] = (c as u32, a);
-                fill[r as usize] += 1;
-            }
-        }
+        let (row_ptr, row_entries) = rows_of(nrows, columns);
         // Column i of the upper triangle of G holds the rows j <= i that share a column of J
         // with row i; the diagonal (j = i) comes last. A marker array avoids sorting G.
         let mut col_ptr = vec![0usize; nrows + 1];
@@ -143,34 +126,40 @@ impl Pattern {
     }
 }
 
-/// Symmetric adjacency lists of the rows of `G` (rows of `J` sharing a column), diagonal left
-/// out.
-fn adjacency(nrows: usize, columns: &Columns) -> (Vec<usize>, Vec<u32>) {
-    // The columns of each row of J.
-    let mut row_ptr = vec![0usize; nrows + 1];
+/// The rows of `J` with their entries: row `i` is `entries[ptr[i]..ptr[i + 1]]`, each
+/// `(column, index into J's values)`.
+fn rows_of(nrows: usize, columns: &Columns) -> (Vec<usize>, Vec<(u32, u32)>) {
+    let mut ptr = vec![0usize; nrows + 1];
     for col in columns.iter() {
         for &(r, _) in col {
-            row_ptr[r as usize + 1] += 1;
+            ptr[r as usize + 1] += 1;
         }
     }
     for i in 0..nrows {
-        row_ptr[i + 1] += row_ptr[i];
+        ptr[i + 1] += ptr[i];
     }
-    let mut fill = row_ptr.clone();
-    let mut row_cols = vec![0u32; row_ptr[nrows]];
+    let mut fill = ptr.clone();
+    let mut entries = vec![(0u32, 0u32); ptr[nrows]];
     for (c, col) in columns.iter().enumerate() {
-        for &(r, _) in col {
-            row_cols[fill[r as usize]] = c as u32;
+        for &(r, a) in col {
+            entries[fill[r as usize]] = (c as u32, a);
             fill[r as usize] += 1;
         }
     }
+    (ptr, entries)
+}
+
+/// Symmetric adjacency lists of the rows of `G` (rows of `J` sharing a column), diagonal left
+/// out.
+fn adjacency(nrows: usize, columns: &Columns) -> (Vec<usize>, Vec<u32>) {
+    let (row_ptr, row_entries) = rows_of(nrows, columns);
     let mut mark = vec![u32::MAX; nrows];
     let mut ptr = Vec::with_capacity(nrows + 1);
     ptr.push(0usize);
     let mut adj = Vec::new();
     for i in 0..nrows {
         mark[i] = i as u32;
-        for &c in &row_cols[row_ptr[i]..row_ptr[i + 1]] {
+        for &(c, _) in &row_entries[row_ptr[i]..row_ptr[i + 1]] {
             for &(j, _) in columns.col(c as usize) {
                 if mark[j as usize] != i as u32 {
                     mark[j as usize] = i as u32;

@@ -239,7 +239,6 @@ fn solve_values(
     let Plan {
         unknown,
         root_dragged,
-        col_of,
         col_root,
         comps,
         local,
@@ -247,10 +246,7 @@ fn solve_values(
         n_unknown,
         ..
     } = plan;
-    let col_of_param = |p: usize| -> Option<u32> {
-        let c = col_of[p];
-        (c != u32::MAX).then_some(c)
-    };
+    let col_of_param = |p: usize| plan.col(p);
     let ncomps = comps.col_ptr.len() - 1;
 
     // 4. Newton per component.

@@ -29,6 +29,19 @@ pub(super) struct Plan {
     pub n_unknown: usize,
 }
 
+/// The column of parameter `p` in `col_of` (`u32::MAX`: none).
+fn column(col_of: &[u32], p: usize) -> Option<u32> {
+    let c = col_of[p];
+    (c != u32::MAX).then_some(c)
+}
+
+impl Plan {
+    /// The column of parameter `p`, if it is an unknown of the solve.
+    pub fn col(&self, p: usize) -> Option<u32> {
+        column(&self.col_of, p)
+    }
+}
+
 /// Applies the equalities and fixes of `links` at `values`.
 pub(super) fn substitute(
     links: &[Link],
@@ -113,10 +126,7 @@ impl Plan {
                 }
             })
             .collect();
-        let col_of_param = |p: usize| -> Option<u32> {
-            let c = col_of[p];
-            (c != u32::MAX).then_some(c)
-        };
+        let col_of_param = |p: usize| column(&col_of, p);
 
         // Components: columns joined by the kernels that share them.
         let ncols = col_root.len();

@@ -92,6 +92,15 @@ fn assert_same(fx: &Fx, c: &Constraint, choice: u8) {
     assert_matches(fx, &eq, &locals);
 }
 
+/// Two moving lines of the workplane on points `pts[0..4]`; with `shared`, both start at the
+/// same point entity, whose slots then feed twice.
+fn two_lines(fx: &mut Fx, pts: &[u32], shared: bool) -> (u32, u32) {
+    let second_start = if shared { pts[0] } else { pts[2] };
+    let l0 = fx.line_of(MOVING, Form::Plane, pts[0], pts[1]);
+    let l1 = fx.line_of(MOVING, Form::Plane, second_start, pts[3]);
+    (l0, l1)
+}
+
 fn coord() -> impl Strategy<Value = [f64; 2]> {
     [-50.0..50.0f64, -50.0..50.0f64]
 }
@@ -163,10 +172,7 @@ proptest! {
     ) {
         let mut fx = Fx::new();
         let pts: Vec<u32> = p.iter().map(|&uv| fx.p2(MOVING, fx.wp, uv)).collect();
-        // With `shared`, both lines start at the same point entity: its slots feed twice.
-        let second_start = if shared { pts[0] } else { pts[2] };
-        let l0 = fx.line_of(MOVING, Form::Plane, pts[0], pts[1]);
-        let l1 = fx.line_of(MOVING, Form::Plane, second_start, pts[3]);
+        let (l0, l1) = two_lines(&mut fx, &pts, shared);
         let c = fx
             .con(K::Angle, Form::Plane)
             .with_entities([l0, l1, 0, 0])
@@ -545,9 +551,7 @@ proptest! {
         let pts: Vec<u32> = p.iter().map(|&uv| fx.p2(MOVING, fx.wp, uv)).collect();
         let c = fx.con(K::PtPtDistance, Form::Plane).with_points(pts[0], pts[1]).with_val(d);
         assert_compacts(&fx, &c, 0, 4);
-        let second_start = if shared { pts[0] } else { pts[2] };
-        let l0 = fx.line_of(MOVING, Form::Plane, pts[0], pts[1]);
-        let l1 = fx.line_of(MOVING, Form::Plane, second_start, pts[3]);
+        let (l0, l1) = two_lines(&mut fx, &pts, shared);
         let c = fx
             .con(K::Angle, Form::Plane)
             .with_entities([l0, l1, 0, 0])
