@@ -217,7 +217,7 @@ pub(crate) fn compile_unmerged(
     Ok(out)
 }
 
-fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec<f64>) -> Kernel {
+pub(super) fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec<f64>) -> Kernel {
     x.clear();
     x.extend(l.params.iter().map(|&p| values[p as usize]));
     eq.choose(x);
@@ -316,7 +316,7 @@ fn compile_constraint(
     x: &mut Vec<f64>,
     out: &mut Compiled,
 ) -> Result<(), ModelError> {
-    if super::direct::links(r.sys, c, values, out) {
+    if super::direct::links(r.sys, c, values, x, out) {
         return Ok(());
     }
     compile_resolved(r, c, values, x, out)

@@ -1,11 +1,13 @@
 //! The commonest constraints of a sketch read straight from the model: a horizontal or vertical
 //! line, two coincident points, a dragged point, all of them in the constraint's workplane,
 //! are equalities between parameters (or a parameter and its value) and become substitution
-//! links without resolving the workplane or building an equation. Anything else, including
-//! every case that could be an error, takes the general path.
+//! links without resolving the workplane or building an equation. A distance between two of
+//! its points and the angle between two of its lines become their (planar) equations the same
+//! way. Anything else, including every case that could be an error, takes the general path.
 
-use super::compile::{Compiled, Link};
-use super::Owner;
+use super::compile::{kernel, Compiled, Link};
+use super::refs::{Ent, Locals, PointRef};
+use super::{EqKind, Equation, Owner};
 use crate::model::{Constraint, ConstraintKind, EntityId, EntityKind, System};
 
 /// The `(u, v)` parameter positions of point `h` when it is a point of workplane `wp`.
@@ -19,9 +21,15 @@ fn uv(sys: &System, h: Option<EntityId>, wp: EntityId) -> Option<[usize; 2]> {
     }
 }
 
-/// Adds the links of `c` to `out` when it is one of the simple equalities; false (and nothing
-/// added) otherwise.
-pub(super) fn links(sys: &System, c: &Constraint, values: &[f64], out: &mut Compiled) -> bool {
+/// Adds the links (or the planar kernel) of `c` to `out` when it is one of the constraints
+/// above; false (and nothing added) otherwise.
+pub(super) fn links(
+    sys: &System,
+    c: &Constraint,
+    values: &[f64],
+    x: &mut Vec<f64>,
+    out: &mut Compiled,
+) -> bool {
     use ConstraintKind as K;
     let Some(wp) = c.workplane else {
         return false;
@@ -81,8 +89,65 @@ pub(super) fn links(sys: &System, c: &Constraint, values: &[f64], out: &mut Comp
             }
             true
         }
+        K::PtPtDistance | K::Angle => planar_kernel(sys, c, wp, values, x, out),
         _ => false,
     }
+}
+
+/// A distance between two points of workplane `wp`, or the angle between two of its lines: the
+/// equation [`super::planar::compact`] makes of the resolved constraint, built from the `(u, v)`
+/// of the points, in the order the resolver meets them.
+fn planar_kernel(
+    sys: &System,
+    c: &Constraint,
+    wp: EntityId,
+    values: &[f64],
+    x: &mut Vec<f64>,
+    out: &mut Compiled,
+) -> bool {
+    let frame = super::planar::unread_frame(wp);
+    let mut l = Locals::default();
+    let point = |l: &mut Locals, h: Option<EntityId>| -> Option<PointRef> {
+        let [u, v] = uv(sys, h, wp)?;
+        Some(PointRef::P2 {
+            wp: frame,
+            uv: [l.slot(u), l.slot(v)],
+        })
+    };
+    let line = |l: &mut Locals, h: Option<EntityId>| -> Option<Ent> {
+        match &sys.entity(h?)?.kind {
+            EntityKind::LineSegment { points } => Some(Ent::Line([
+                point(l, Some(points[0]))?,
+                point(l, Some(points[1]))?,
+            ])),
+            _ => None,
+        }
+    };
+    let (pts, ents) = if c.kind == ConstraintKind::PtPtDistance {
+        let (Some(a), Some(b)) = (point(&mut l, c.pt_a), point(&mut l, c.pt_b)) else {
+            return false;
+        };
+        ([Some(a), Some(b)], Vec::new())
+    } else {
+        let (Some(a), Some(b)) = (line(&mut l, c.entity_a), line(&mut l, c.entity_b)) else {
+            return false;
+        };
+        ([None, None], vec![a, b])
+    };
+    let eq = Equation {
+        kind: EqKind::Constraint(c.kind),
+        wp: Some(frame),
+        pts,
+        ents,
+        val: c.val,
+        other: c.other,
+        other2: c.other2,
+        choice: 0,
+        target: [0.0; 3],
+    };
+    out.kernels
+        .push(kernel(Owner::Constraint(c.h), l, eq, values, x));
+    true
 }
 
 #[cfg(test)]
@@ -126,6 +191,7 @@ mod tests {
             Entity::point_3d(114, 1, p3),
             Entity::line(120, 1, Some(102), 110, 111),
             Entity::line(121, 1, Some(102), 110, 113),
+            Entity::line(122, 1, Some(102), 112, 111),
         ];
         for e in ents {
             s.add_entity(e).expect("fresh entity");
@@ -154,16 +220,26 @@ mod tests {
             (on(7, K::PointsCoincident, 102).with_points(110, 114), false),
             (on(8, K::Vertical, 102).with_entities([121, 0, 0, 0]), false),
             (on(9, K::WhereDragged, 103).with_points(111, 0), false),
+            (on(10, K::PtPtDistance, 102).with_points(110, 112), true),
+            (on(11, K::PtPtDistance, 102).with_points(111, 111), true),
+            (on(12, K::PtPtDistance, 102).with_points(110, 113), false),
+            (on(13, K::PtPtDistance, 103).with_points(110, 111), false),
+            (on(14, K::Angle, 102).with_entities([120, 122, 0, 0]), true),
+            (on(15, K::Angle, 102).with_entities([120, 120, 0, 0]), true),
+            (on(16, K::Angle, 102).with_entities([120, 121, 0, 0]), false),
         ];
         for (c, direct) in cases {
+            let c = c.with_val(12.5);
             let (mut a, mut b) = (Compiled::default(), Compiled::default());
-            assert_eq!(links(&s, &c, &values, &mut a), direct, "{:?}", c.kind);
-            compile_resolved(&r, &c, &values, &mut Vec::new(), &mut b).expect("compiles");
+            let x = &mut Vec::new();
+            assert_eq!(links(&s, &c, &values, x, &mut a), direct, "{:?}", c.kind);
+            compile_resolved(&r, &c, &values, x, &mut b).expect("compiles");
             if direct {
                 assert_eq!(format!("{:?}", a.links), format!("{:?}", b.links));
-                assert!(b.kernels.is_empty());
+                assert_eq!(format!("{:?}", a.kernels), format!("{:?}", b.kernels));
+                assert_eq!(a.links.len() + a.kernels.len(), b.links.len() + b.kernels.len());
             } else {
-                assert!(a.links.is_empty());
+                assert!(a.links.is_empty() && a.kernels.is_empty());
             }
         }
     }

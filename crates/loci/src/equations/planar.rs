@@ -60,15 +60,20 @@ fn planar(eq: &Equation) -> Option<EntityId> {
     }
 }
 
+/// The workplane `id` of a planar equation: none of its parameters is read.
+pub(super) fn unread_frame(id: EntityId) -> Frame {
+    Frame {
+        id,
+        origin: [UNREAD; 3],
+        q: [UNREAD; 4],
+    }
+}
+
 /// For a planar equation, its locals without the workplane's parameters (the equation's
 /// slots renumbered to match); `None` for any other equation, which keeps `locals`.
 pub(super) fn compact(eq: &mut Equation, locals: &Locals) -> Option<Locals> {
     let id = planar(eq)?;
-    let gone = Frame {
-        id,
-        origin: [UNREAD; 3],
-        q: [UNREAD; 4],
-    };
+    let gone = unread_frame(id);
     let mut out = Locals::default();
     let mut renumber = |p: &mut PointRef| {
         if let PointRef::P2 { wp, uv } = p {
