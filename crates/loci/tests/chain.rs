@@ -72,3 +72,33 @@ fn short_chains_solve_for_several_seeds() {
     }
     solve_and_check(1, 9);
 }
+
+#[test]
+fn a_solver_keeps_up_with_changed_angles() {
+    let mut ch = chain(50, 3, 0.3);
+    let mut sys = std::mem::take(&mut ch.system);
+    let mut solver = loci::Solver::new(ch.group, &[], loci::Config::default());
+    assert_eq!(solver.solve(&mut sys).unwrap().outcome, Outcome::Okay);
+    assert!(worst_residual(&ch, &sys) < 1e-9);
+    // The angles are the constraints of that kind, in segment order. Re-solving with the
+    // structure kept must read each new value, not the one the first solve compiled.
+    let angles: Vec<loci::ConstraintId> = sys
+        .constraints()
+        .iter()
+        .filter(|c| c.kind == loci::ConstraintKind::Angle)
+        .map(|c| c.h)
+        .collect();
+    assert_eq!(angles.len(), ch.angles.len());
+    for (i, &h) in angles.iter().enumerate().step_by(7) {
+        ch.angles[i] += 4.0;
+        sys.constraint_mut(h).unwrap().val = ch.angles[i];
+    }
+    assert!(
+        worst_residual(&ch, &sys) > 1e-3,
+        "the new angles do not hold yet"
+    );
+    let rep = solver.solve(&mut sys).unwrap();
+    assert_eq!(rep.outcome, Outcome::Okay, "{rep:?}");
+    let worst = worst_residual(&ch, &sys);
+    assert!(worst < 1e-9, "largest residual {worst:e}");
+}

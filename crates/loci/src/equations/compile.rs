@@ -217,7 +217,13 @@ pub(crate) fn compile_unmerged(
     Ok(out)
 }
 
-pub(super) fn kernel(owner: Owner, l: Locals, mut eq: Equation, values: &[f64], x: &mut Vec<f64>) -> Kernel {
+pub(super) fn kernel(
+    owner: Owner,
+    l: Locals,
+    mut eq: Equation,
+    values: &[f64],
+    x: &mut Vec<f64>,
+) -> Kernel {
     x.clear();
     x.extend(l.params.iter().map(|&p| values[p as usize]));
     eq.choose(x);

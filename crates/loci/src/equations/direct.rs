@@ -237,7 +237,10 @@ mod tests {
             if direct {
                 assert_eq!(format!("{:?}", a.links), format!("{:?}", b.links));
                 assert_eq!(format!("{:?}", a.kernels), format!("{:?}", b.kernels));
-                assert_eq!(a.links.len() + a.kernels.len(), b.links.len() + b.kernels.len());
+                assert_eq!(
+                    a.links.len() + a.kernels.len(),
+                    b.links.len() + b.kernels.len()
+                );
             } else {
                 assert!(a.links.is_empty() && a.kernels.is_empty());
             }

@@ -85,10 +85,13 @@ fn angle(e: &Equation, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f6
     // Directions start minus end, as the generic equation takes them.
     let (ax, ay) = (v(p0[0]) - v(p1[0]), v(p0[1]) - v(p1[1]));
     let (bx, by) = (v(q0[0]) - v(q1[0]), v(q0[1]) - v(q1[1]));
-    let t = target(e);
-    let t = if e.choice == 1 { -t } else { t };
     let (c, s) = (ax * bx + ay * by + 0.0 * 0.0, ax * by - ay * bx);
-    let (st, ct) = (t.sin(), t.cos());
+    let t = signed_target(e);
+    let (st, ct) = match e.target {
+        // Kept by `prepare` for this very target (sine and cosine are never both zero).
+        [k, st, ct] if k.to_bits() == t.to_bits() && (st != 0.0 || ct != 0.0) => (st, ct),
+        _ => (t.sin(), t.cos()),
+    };
     let (num, den) = (s * ct - c * st, c * ct + s * st);
     res[0] = num.atan2(den);
     let r2 = num * num + den * den;
@@ -116,6 +119,27 @@ fn angle(e: &Equation, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f6
         jac,
     );
     true
+}
+
+/// The target of a 2D angle with the sign of its branch.
+fn signed_target(e: &Equation) -> f64 {
+    let t = target(e);
+    if e.choice == 1 {
+        -t
+    } else {
+        t
+    }
+}
+
+/// Computes what the written-out derivatives of `e` can keep between evaluations: for a 2D
+/// angle, its signed target with the sine and cosine of it (two of the three transcendental
+/// calls of every evaluation), used while the target is that one. Called once the branch is
+/// chosen, and again whenever the value changes.
+pub(super) fn prepare(e: &mut Equation) {
+    if e.kind == EqKind::Constraint(ConstraintKind::Angle) && e.wp.is_some() {
+        let t = signed_target(e);
+        e.target = [t, t.sin(), t.cos()];
+    }
 }
 
 /// The cosine between an arc's radius at its start (end with `other`) and a line, both in the

@@ -61,7 +61,8 @@ pub(crate) struct Equation {
     /// A branch chosen from the starting configuration (which components of a cross product to
     /// keep, which sign an angle has ...), so that the equations stay well conditioned.
     pub choice: u8,
-    /// For `where_dragged`: the position the point must keep.
+    /// For `where_dragged`: the position the point must keep. For a 2D angle: its signed
+    /// target in radians with its sine and cosine, kept by [`Equation::prepare`].
     pub target: [f64; 3],
 }
 
@@ -200,6 +201,12 @@ impl Equation {
             EqKind::Constraint(K::ArcLineTangent) => circles::choose_arc_line(self, &g),
             _ => 0,
         };
+        self.prepare();
+    }
+
+    /// Brings what evaluations keep of the equation's value up to date; after `val` changes.
+    pub fn prepare(&mut self) {
+        fast::prepare(self);
     }
 
     /// Number of residuals.

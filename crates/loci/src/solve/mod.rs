@@ -404,7 +404,10 @@ fn refresh(sys: &System, values: &[f64], cache: &mut Cache) {
     for k in &mut cache.kernels {
         if let Owner::Constraint(h) = k.owner {
             if let Some(c) = sys.constraint(h) {
-                k.eq.val = c.val;
+                if k.eq.val.to_bits() != c.val.to_bits() {
+                    k.eq.val = c.val;
+                    k.eq.prepare();
+                }
             }
         }
     }

@@ -43,7 +43,6 @@ pub(crate) struct Finish {
 #[derive(Default)]
 pub(crate) struct Scratch {
     r: Vec<f64>,
-    jv: Vec<f64>,
     jn: Vec<f64>,
     inv: Vec<f64>,
     y: Vec<f64>,
@@ -225,13 +224,16 @@ impl Component {
         }
     }
 
-    /// Residuals and Jacobian.
+    /// Residuals, and the Jacobian `jn` of the scaled unknowns with its rows normalised
+    /// (`inv` holds the inverse of each row's norm, 0 for an empty row), so that the pivots of
+    /// `G` measure independence, not units.
     fn jacobian(
         &self,
         kernels: &[Kernel],
         x: &[f64],
         r: &mut [f64],
-        jv: &mut [f64],
+        jn: &mut [f64],
+        inv: &mut [f64],
         xs: &mut [f64],
         jl: &mut Vec<f64>,
     ) {
@@ -250,7 +252,7 @@ impl Component {
             let jl = &mut jl[..need];
             k.eq.jacobian_active(xs, active, &mut r[b.row0..b.row0 + k.rows], jl);
             let w = b.ncols as usize;
-            let block = &mut jv[b.jv0..b.jv0 + k.rows * w];
+            let block = &mut jn[b.jv0..b.jv0 + k.rows * w];
             if na == w {
                 // Every unknown appears once: the block is the Jacobian as computed.
                 for row in 0..k.rows {
@@ -266,6 +268,20 @@ impl Component {
                         block[row * w + c as usize] += jl[row * na + a];
                     }
                 }
+            }
+            let cols = &self.block_cols[b.cols0 as usize..b.cols0 as usize + w];
+            if w == 0 {
+                inv[b.row0..b.row0 + k.rows].fill(0.0);
+            }
+            for (row, vals) in block.chunks_exact_mut(w.max(1)).enumerate() {
+                let mut sq = 0.0;
+                for (v, &c) in vals.iter_mut().zip(cols) {
+                    *v *= self.scale[c as usize];
+                    sq += *v * *v;
+                }
+                let iv = if sq > 0.0 { 1.0 / sq.sqrt() } else { 0.0 };
+                inv[b.row0 + row] = iv;
+                vals.iter_mut().for_each(|v| *v *= iv);
             }
         }
     }
@@ -287,7 +303,6 @@ impl Component {
         let mut gram_slot = self.gram.take();
         let Scratch {
             r,
-            jv,
             jn,
             inv,
             y,
@@ -301,7 +316,6 @@ impl Component {
         // earlier solve are used as they are.
         for (v, n) in [
             (&mut *r, m),
-            (&mut *jv, self.nnz),
             (&mut *jn, self.nnz),
             (&mut *inv, m),
             (&mut *y, m),
@@ -316,9 +330,8 @@ impl Component {
         }
         self.gather_all(kernels, x, values, xs);
         let xs = &mut xs[..];
-        let (r, jv, jn, inv, y, dx, xt, rt) = (
+        let (r, jn, inv, y, dx, xt, rt) = (
             &mut r[..],
-            &mut jv[..],
             &mut jn[..],
             &mut inv[..],
             &mut y[..],
@@ -345,25 +358,7 @@ impl Component {
         // Iterations since the merit last reached a new low.
         let (mut best, mut since_best) = (f64::INFINITY, 0usize);
         loop {
-            self.jacobian(kernels, x, r, jv, xs, jl);
-            // Normalise rows of J S so the pivots of G measure independence, not units.
-            inv.iter_mut().for_each(|v| *v = 0.0);
-            for (c, col) in self.columns.iter().enumerate() {
-                let s = self.scale[c];
-                for &(row, idx) in col {
-                    let v = jv[idx as usize] * s;
-                    jn[idx as usize] = v;
-                    inv[row as usize] += v * v;
-                }
-            }
-            for v in inv.iter_mut() {
-                *v = if *v > 0.0 { 1.0 / v.sqrt() } else { 0.0 };
-            }
-            for col in self.columns.iter() {
-                for &(row, idx) in col {
-                    jn[idx as usize] *= inv[row as usize];
-                }
-            }
+            self.jacobian(kernels, x, r, jn, inv, xs, jl);
             let Some(gram) = gram_slot.as_mut() else {
                 break;
             };
