@@ -2,6 +2,8 @@
 //! not depend on how many: every value bit for bit, and the same report.
 #![allow(missing_docs)]
 
+mod common;
+
 use loci::{Config, Constraint, ConstraintKind as K, Entity, Param, System};
 
 /// `n` independent triangles in the xy workplane, each started off its solution: three lengths,
@@ -68,13 +70,17 @@ fn triangles(n: u32) -> System {
 
 /// Solves a copy of `sys` on a pool of `threads` threads: the report and every value's bits.
 fn solve_on(sys: &System, threads: usize) -> (String, Vec<u64>) {
+    solve_group_on(sys, 2, threads)
+}
+
+fn solve_group_on(sys: &System, group: u32, threads: usize) -> (String, Vec<u64>) {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
         .expect("a thread pool");
     let mut sys = sys.clone();
     let report = pool
-        .install(|| loci::solve(&mut sys, 2.into(), &[], &Config::default()))
+        .install(|| loci::solve(&mut sys, group.into(), &[], &Config::default()))
         .expect("valid");
     let bits = sys.params().iter().map(|p| p.val.to_bits()).collect();
     (format!("{report:?}"), bits)
@@ -97,4 +103,19 @@ fn thread_count_does_not_change_the_answer() {
     let v = |h: u32| solved.value(loci::ParamId(h)).expect("param");
     let d = ((v(104) - v(100)).powi(2) + (v(105) - v(101)).powi(2)).sqrt();
     assert!((d - 4.0).abs() < 1e-9, "{d}");
+}
+
+#[test]
+fn one_large_component_evaluated_on_several_threads_gives_the_same_answer() {
+    // 3,000 segments: about 6,000 rows in one component, whose equations are evaluated on all
+    // cores.
+    let ch = common::perturbed_chain::chain(3000, 4, 0.3);
+    let (report, one) = solve_group_on(&ch.system, ch.group.0, 1);
+    assert!(report.contains("Okay"), "{report}");
+    assert!(report.contains("components: 1"), "{report}");
+    for threads in [2, 3] {
+        let (r, bits) = solve_group_on(&ch.system, ch.group.0, threads);
+        assert_eq!(r, report, "report with {threads} threads");
+        assert!(bits == one, "values differ with {threads} threads");
+    }
 }

@@ -26,6 +26,19 @@ pub(crate) struct Block {
     nactive: u32,
 }
 
+/// Where [`Component::evaluate`] writes: residuals, normalised Jacobian entries and inverse
+/// row norms (both empty for residuals alone), and the local slots it loads.
+struct Out<'a> {
+    r: &'a mut [f64],
+    jn: &'a mut [f64],
+    inv: &'a mut [f64],
+    xs: &'a mut [f64],
+}
+
+/// From this many rows on, a component's equations are evaluated on all cores.
+#[cfg(feature = "parallel")]
+const PARALLEL_ROWS: usize = 4096;
+
 /// How one component ended.
 pub(crate) struct Finish {
     pub converged: bool,
@@ -196,37 +209,21 @@ impl Component {
         }
     }
 
-    /// Writes the unknowns at `x` into the local slots (constants stay as gathered).
-    fn load(&self, x: &[f64], xs: &mut [f64]) {
-        for b in &self.blocks {
-            let (s0, a0) = (b.slot0 as usize, b.active0 as usize);
-            let cols = &self.block_cols[b.cols0 as usize..];
-            let active = &self.active[a0..a0 + b.nactive as usize];
-            let active_col = &self.active_col[a0..a0 + b.nactive as usize];
-            for (&s, &c) in active.iter().zip(active_col) {
-                xs[s0 + s as usize] = x[cols[c as usize] as usize];
-            }
-        }
-    }
-
     /// Residuals only.
     fn residuals(&self, kernels: &[Kernel], x: &[f64], r: &mut [f64], xs: &mut [f64]) {
-        self.load(x, xs);
-        for b in &self.blocks {
-            let k = &kernels[b.kernel];
-            let xs = &xs[b.slot0 as usize..b.slot0 as usize + k.locals.len()];
-            let rows = &mut r[b.row0..b.row0 + k.rows];
-            if !k.eq.residuals_fast(xs, rows) {
-                let mut out = Rows::new();
-                k.eq.eval(xs, &mut out);
-                rows.copy_from_slice(&out.v[..k.rows]);
-            }
-        }
+        let out = Out {
+            r,
+            jn: &mut [],
+            inv: &mut [],
+            xs,
+        };
+        self.evaluate(kernels, x, out, &mut Vec::new(), false);
     }
 
     /// Residuals, and the Jacobian `jn` of the scaled unknowns with its rows normalised
     /// (`inv` holds the inverse of each row's norm, 0 for an empty row), so that the pivots of
     /// `G` measure independence, not units.
+    #[allow(clippy::too_many_arguments)]
     fn jacobian(
         &self,
         kernels: &[Kernel],
@@ -237,22 +234,120 @@ impl Component {
         xs: &mut [f64],
         jl: &mut Vec<f64>,
     ) {
-        self.load(x, xs);
-        for b in &self.blocks {
+        self.evaluate(kernels, x, Out { r, jn, inv, xs }, jl, true);
+    }
+
+    /// Every block's residuals (and Jacobian): spread over the cores for a large component.
+    /// Each block writes its own rows, entries and slots, the same whichever thread runs it.
+    fn evaluate(
+        &self,
+        kernels: &[Kernel],
+        x: &[f64],
+        out: Out<'_>,
+        jl: &mut Vec<f64>,
+        jacobian: bool,
+    ) {
+        #[cfg(feature = "parallel")]
+        if self.rows >= PARALLEL_ROWS {
+            let threads = rayon::current_num_threads().min(8);
+            if threads > 1 {
+                let per = self.blocks.len().div_ceil(threads);
+                let Out {
+                    mut r,
+                    mut jn,
+                    mut inv,
+                    mut xs,
+                } = out;
+                rayon::scope(|scope| {
+                    for chunk in self.blocks.chunks(per) {
+                        let (first, last) = (&chunk[0], &chunk[chunk.len() - 1]);
+                        let k = &kernels[last.kernel];
+                        let rows = last.row0 + k.rows - first.row0;
+                        let slots = last.slot0 as usize + k.locals.len() - first.slot0 as usize;
+                        let (rc, rest) = std::mem::take(&mut r).split_at_mut(rows);
+                        r = rest;
+                        let (xc, rest) = std::mem::take(&mut xs).split_at_mut(slots);
+                        xs = rest;
+                        let (jc, ic) = if jacobian {
+                            let nnz = last.jv0 + k.rows * last.ncols as usize - first.jv0;
+                            let (jc, rest) = std::mem::take(&mut jn).split_at_mut(nnz);
+                            jn = rest;
+                            let (ic, rest) = std::mem::take(&mut inv).split_at_mut(rows);
+                            inv = rest;
+                            (jc, ic)
+                        } else {
+                            (&mut [][..], &mut [][..])
+                        };
+                        let part = Out {
+                            r: rc,
+                            jn: jc,
+                            inv: ic,
+                            xs: xc,
+                        };
+                        scope.spawn(move |_| {
+                            self.evaluate_blocks(
+                                kernels,
+                                chunk,
+                                x,
+                                part,
+                                &mut Vec::new(),
+                                jacobian,
+                            );
+                        });
+                    }
+                });
+                return;
+            }
+        }
+        self.evaluate_blocks(kernels, &self.blocks, x, out, jl, jacobian);
+    }
+
+    /// [`Component::evaluate`] for consecutive `blocks`, whose rows, Jacobian entries and slots
+    /// start `out`.
+    fn evaluate_blocks(
+        &self,
+        kernels: &[Kernel],
+        blocks: &[Block],
+        x: &[f64],
+        out: Out<'_>,
+        jl: &mut Vec<f64>,
+        jacobian: bool,
+    ) {
+        let Some(first) = blocks.first() else {
+            return;
+        };
+        let (row_base, jv_base, slot_base) = (first.row0, first.jv0, first.slot0 as usize);
+        for b in blocks {
             let k = &kernels[b.kernel];
-            let xs = &xs[b.slot0 as usize..b.slot0 as usize + k.locals.len()];
+            let w = b.ncols as usize;
+            let cols = &self.block_cols[b.cols0 as usize..b.cols0 as usize + w];
             let na = b.nactive as usize;
             let active = &self.active[b.active0 as usize..b.active0 as usize + na];
             let active_col = &self.active_col[b.active0 as usize..b.active0 as usize + na];
+            // The unknowns at `x` into the local slots (constants stay as gathered).
+            let s0 = b.slot0 as usize - slot_base;
+            let xs = &mut out.xs[s0..s0 + k.locals.len()];
+            for (&s, &c) in active.iter().zip(active_col) {
+                xs[s as usize] = x[cols[c as usize] as usize];
+            }
+            let r = &mut out.r[b.row0 - row_base..b.row0 - row_base + k.rows];
+            if !jacobian {
+                if !k.eq.residuals_fast(xs, r) {
+                    let mut rows = Rows::new();
+                    k.eq.eval(xs, &mut rows);
+                    r.copy_from_slice(&rows.v[..k.rows]);
+                }
+                continue;
+            }
             // Every entry is written: no need to clear between blocks.
             let need = k.rows * na;
             if jl.len() < need {
                 jl.resize(need, 0.0);
             }
             let jl = &mut jl[..need];
-            k.eq.jacobian_active(xs, active, &mut r[b.row0..b.row0 + k.rows], jl);
-            let w = b.ncols as usize;
-            let block = &mut jn[b.jv0..b.jv0 + k.rows * w];
+            k.eq.jacobian_active(xs, active, r, jl);
+            let j0 = b.jv0 - jv_base;
+            let block = &mut out.jn[j0..j0 + k.rows * w];
             if na == w {
                 // Every unknown appears once: the block is the Jacobian as computed.
                 for row in 0..k.rows {
@@ -269,19 +364,18 @@ impl Component {
                     }
                 }
             }
-            let cols = &self.block_cols[b.cols0 as usize..b.cols0 as usize + w];
+            let inv = &mut out.inv[b.row0 - row_base..b.row0 - row_base + k.rows];
             if w == 0 {
-                inv[b.row0..b.row0 + k.rows].fill(0.0);
+                inv.fill(0.0);
             }
-            for (row, vals) in block.chunks_exact_mut(w.max(1)).enumerate() {
+            for (iv, vals) in inv.iter_mut().zip(block.chunks_exact_mut(w.max(1))) {
                 let mut sq = 0.0;
                 for (v, &c) in vals.iter_mut().zip(cols) {
                     *v *= self.scale[c as usize];
                     sq += *v * *v;
                 }
-                let iv = if sq > 0.0 { 1.0 / sq.sqrt() } else { 0.0 };
-                inv[b.row0 + row] = iv;
-                vals.iter_mut().for_each(|v| *v *= iv);
+                *iv = if sq > 0.0 { 1.0 / sq.sqrt() } else { 0.0 };
+                vals.iter_mut().for_each(|v| *v *= *iv);
             }
         }
     }
