@@ -166,6 +166,74 @@ fn one_point_pinned_in_two_places_through_a_coincidence_is_inconsistent() {
     assert_eq!(rep.dof, 1);
 }
 
+/// A grid of `n` x `n` squares whose lines are horizontal or vertical, with the lengths along
+/// its first row and first column, its first corner pinned, and a diagonal one unit too long.
+/// Returns the sketch, the diagonal, and the constraints the conflict runs through: the lengths,
+/// the verticals up the last column and the horizontals along the last row.
+fn grid_with_a_wrong_diagonal(n: u32) -> (Sketch, u32, Vec<u32>) {
+    let mut s = Sketch::new();
+    let side = 10.0;
+    let m = n + 1;
+    let at = |i: u32, j: u32| 1000 + j * m + i;
+    for j in 0..m {
+        for i in 0..m {
+            // Off the exact drawing, differently at every point.
+            let wobble = f64::from((i * 7 + j * 3) % 5) * 0.05;
+            s.point(
+                at(i, j),
+                2,
+                [side * f64::from(i) + wobble, side * f64::from(j) - wobble],
+            );
+        }
+    }
+    s.on_points(2, K::WhereDragged, at(0, 0), 0, 0.0);
+    let mut line = 5000;
+    let mut conflict = Vec::new();
+    for j in 0..m {
+        for i in 0..n {
+            line += 1;
+            s.line(line, 2, at(i, j), at(i + 1, j));
+            let h = s.on_entities(2, K::Horizontal, line, 0, 0.0);
+            if j == n {
+                conflict.push(h);
+            }
+            if j == 0 {
+                conflict.push(s.on_points(2, K::PtPtDistance, at(i, j), at(i + 1, j), side));
+            }
+        }
+    }
+    for i in 0..m {
+        for j in 0..n {
+            line += 1;
+            s.line(line, 2, at(i, j), at(i, j + 1));
+            let v = s.on_entities(2, K::Vertical, line, 0, 0.0);
+            if i == n {
+                conflict.push(v);
+            }
+            if i == 0 {
+                conflict.push(s.on_points(2, K::PtPtDistance, at(i, j), at(i, j + 1), side));
+            }
+        }
+    }
+    let diagonal = side * f64::from(n) * 2f64.sqrt() + 1.0;
+    let d = s.on_points(2, K::PtPtDistance, at(0, 0), at(n, n), diagonal);
+    conflict.push(d);
+    (s, d, conflict)
+}
+
+#[test]
+fn a_wrong_diagonal_of_a_grid_names_the_loop_it_closes() {
+    for n in [1, 4, 12] {
+        let (mut s, d, conflict) = grid_with_a_wrong_diagonal(n);
+        let rep = s.sys.solve_group(2).unwrap();
+        assert_eq!(rep.outcome, Outcome::Inconsistent, "{n} x {n}");
+        assert!(rep.failed.contains(&d.into()));
+        // The diagonal, the 2n lengths it depends on, and the n verticals and n horizontals
+        // that carry the far corner's coordinates to them: nothing else in the grid.
+        assert_eq!(rep.failed, ids(&conflict), "{n} x {n}");
+    }
+}
+
 #[test]
 fn too_few_iterations_from_a_far_start_did_not_converge() {
     let (mut s, [_, b, c], [_, _, d1, d2, d3]) = triangle([30.0, 40.0, 50.0]);

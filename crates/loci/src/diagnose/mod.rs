@@ -16,6 +16,7 @@
 
 mod circuits;
 mod eigen;
+mod focus;
 mod freedom;
 mod measure;
 mod minimal;
@@ -32,6 +33,7 @@ pub use report::{
     ConflictSet, Diagnosis, EntityFreedom, Measurement, Member, OverConstrained, RedundantSet,
 };
 
+use crate::equations::{Kernel, Link, Owner};
 use crate::error::SolveError;
 use crate::model::{GroupId, System};
 use crate::solve::{solve_core, Config, Outcome, Report};
@@ -173,25 +175,47 @@ pub(crate) fn name_conflicts(
     values: &[f64],
     cfg: &Config,
     report: &mut Report,
+    kernels: &[Kernel],
+    links: &[Link],
 ) {
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
-    let Ok(eqs) = Equations::new(sys, group, &start) else {
-        return;
+    let sets_in = |eqs: &Equations| -> Vec<ConflictSet> {
+        let lin = eqs.linearise(values);
+        let circuits = match Rank::new(eqs, &lin, cfg) {
+            Some(mut r) => circuits::circuits(eqs, &lin, &mut r, cfg),
+            None => return Vec::new(),
+        };
+        conflict_sets(
+            eqs,
+            &lin,
+            &circuits,
+            values,
+            report.outcome,
+            cfg,
+            cfg.verify_conflicts_up_to,
+        )
     };
-    let lin = eqs.linearise(values);
-    let circuits = match Rank::new(&eqs, &lin, cfg) {
-        Some(mut r) => circuits::circuits(&eqs, &lin, &mut r, cfg),
-        None => return,
-    };
-    let sets = conflict_sets(
-        &eqs,
-        &lin,
-        &circuits,
-        values,
-        report.outcome,
-        cfg,
-        cfg.verify_conflicts_up_to,
-    );
+    // First among the constraints the solver named and the equalities joining them, then, if
+    // that names nothing, in the whole group.
+    let seed: HashSet<Owner> = report
+        .failed
+        .iter()
+        .map(|&c| Owner::Constraint(c))
+        .chain(report.failed_entities.iter().map(|&e| Owner::Entity(e)))
+        .collect();
+    let mut sets = Vec::new();
+    if !seed.is_empty() {
+        let keep = focus::focus(sys, group, &seed, kernels, links);
+        if let Ok(eqs) = Equations::only(sys, group, &start, &|o| keep.contains(&o)) {
+            sets = sets_in(&eqs);
+        }
+    }
+    if sets.is_empty() {
+        let Ok(eqs) = Equations::new(sys, group, &start) else {
+            return;
+        };
+        sets = sets_in(&eqs);
+    }
     if sets.is_empty() {
         return;
     }

@@ -3,7 +3,7 @@
 //! condition) that a report can name.
 
 use super::report::Member;
-use crate::equations::{compile_unmerged, Kernel, Owner, Rows};
+use crate::equations::{compile_unmerged, compile_unmerged_only, Kernel, Owner, Rows};
 use crate::error::ModelError;
 use crate::model::{GroupId, System};
 
@@ -58,7 +58,28 @@ impl Equations {
     /// Compiles `group` of `sys`; `values` (the starting values) pick branches and the
     /// positions `where_dragged` keeps, exactly as the solver does.
     pub fn new(sys: &System, group: GroupId, values: &[f64]) -> Result<Self, ModelError> {
-        let kernels = compile_unmerged(sys, group, values, false)?;
+        Self::from_kernels(sys, group, compile_unmerged(sys, group, values, false)?)
+    }
+
+    /// The equations of the constraints and entities `keep` accepts only.
+    pub fn only(
+        sys: &System,
+        group: GroupId,
+        values: &[f64],
+        keep: &dyn Fn(Owner) -> bool,
+    ) -> Result<Self, ModelError> {
+        Self::from_kernels(
+            sys,
+            group,
+            compile_unmerged_only(sys, group, values, false, keep)?,
+        )
+    }
+
+    fn from_kernels(
+        sys: &System,
+        group: GroupId,
+        kernels: Vec<Kernel>,
+    ) -> Result<Self, ModelError> {
         let params = sys.params();
         let mut col_of_param = vec![CONSTANT; params.len()];
         let mut param_of_col = Vec::new();

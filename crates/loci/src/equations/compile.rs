@@ -201,18 +201,31 @@ pub(crate) fn compile_unmerged(
     values: &[f64],
     references: bool,
 ) -> Result<Vec<Kernel>, ModelError> {
+    compile_unmerged_only(sys, group, values, references, &|_| true)
+}
+
+/// [`compile_unmerged`] for the constraints and entities `keep` accepts.
+pub(crate) fn compile_unmerged_only(
+    sys: &System,
+    group: GroupId,
+    values: &[f64],
+    references: bool,
+    keep: &dyn Fn(Owner) -> bool,
+) -> Result<Vec<Kernel>, ModelError> {
     let r = Resolver::new(sys);
     let mut out = Vec::new();
     let mut x = Vec::new();
     for c in sys.constraints() {
-        if c.group != group || c.reference != references {
+        if c.group != group || c.reference != references || !keep(Owner::Constraint(c.h)) {
             continue;
         }
         let (eq, l) = resolve_constraint(&r, c)?;
         out.push(kernel(Owner::Constraint(c.h), l, eq, values, &mut x));
     }
     if !references {
-        compile_entities(&r, group, values, &mut x, &mut out)?;
+        let mut entities = Vec::new();
+        compile_entities(&r, group, values, &mut x, &mut entities)?;
+        out.extend(entities.into_iter().filter(|k| keep(k.owner)));
     }
     Ok(out)
 }

@@ -17,7 +17,7 @@ mod planar;
 mod points;
 pub(crate) mod refs;
 
-pub(crate) use compile::{compile_group, compile_unmerged, Kernel, Link};
+pub(crate) use compile::{compile_group, compile_unmerged, compile_unmerged_only, Kernel, Link};
 use refs::{Ent, Frame, Geo, PointRef};
 
 use crate::geom::{Dual, Scalar};

@@ -147,8 +147,17 @@ fn solve_cached(
     let (mut report, values) = solve_values(sys, group, dragged, cfg, cache)?;
     if report.outcome == Outcome::Inconsistent && cfg.find_failed {
         // Name the minimal sets that cannot hold together, found on the unmerged equations
-        // where the solve stopped; only failures pay for it.
-        crate::diagnose::name_conflicts(sys, group, &values, cfg, &mut report);
+        // where the solve stopped (those of the constraints it found dependent first); only
+        // failures pay for it.
+        crate::diagnose::name_conflicts(
+            sys,
+            group,
+            &values,
+            cfg,
+            &mut report,
+            &cache.kernels,
+            &cache.links,
+        );
     }
     // Values are written back only when every constraint holds, as libslvs does: a failed
     // solve leaves the caller's parameters as they were.
