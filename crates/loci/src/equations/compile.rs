@@ -97,6 +97,15 @@ fn compile_entities(
             continue;
         }
         let me = ObjectId::Entity(e.h);
+        // An arc of a workplane with a point of this group, read straight from the model.
+        if let Some((eq, l)) = super::direct::arc_radii(r.sys, e).filter(|(_, l)| {
+            l.params
+                .iter()
+                .any(|&p| r.sys.params()[p as usize].group == group)
+        }) {
+            out.push(kernel(Owner::Entity(e.h), l, eq, values, x));
+            continue;
+        }
         let mut l = Locals::default();
         // The constant a moved copy carries (its base), where the equation reads it.
         let mut target = [0.0; 3];

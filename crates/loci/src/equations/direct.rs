@@ -8,7 +8,7 @@
 use super::compile::{kernel, Compiled, Link};
 use super::refs::{Ent, Locals, PointRef};
 use super::{EqKind, Equation, Owner};
-use crate::model::{Constraint, ConstraintKind, EntityId, EntityKind, System};
+use crate::model::{Constraint, ConstraintKind, EntityId, EntityKind, PlaneRule, System};
 
 /// The `(u, v)` parameter positions of point `h` when it is a point of workplane `wp`.
 fn uv(sys: &System, h: Option<EntityId>, wp: EntityId) -> Option<[usize; 2]> {
@@ -89,14 +89,17 @@ pub(super) fn links(
             }
             true
         }
-        K::PtPtDistance | K::Angle => planar_kernel(sys, c, wp, values, x, out),
+        K::PtPtDistance | K::Angle | K::ArcLineTangent | K::Diameter => {
+            planar_kernel(sys, c, wp, values, x, out)
+        }
         _ => false,
     }
 }
 
-/// A distance between two points of workplane `wp`, or the angle between two of its lines: the
-/// equation [`super::planar::compact`] makes of the resolved constraint, built from the `(u, v)`
-/// of the points, in the order the resolver meets them.
+/// A distance between two points of workplane `wp`, the angle between two of its lines, the
+/// tangency of one of its arcs and one of its lines, or an arc's diameter: the equation
+/// [`super::planar::compact`] makes of the resolved constraint, built from the `(u, v)` of the
+/// points, in the order the resolver meets them.
 fn planar_kernel(
     sys: &System,
     c: &Constraint,
@@ -105,38 +108,49 @@ fn planar_kernel(
     x: &mut Vec<f64>,
     out: &mut Compiled,
 ) -> bool {
-    let frame = super::planar::unread_frame(wp);
+    use ConstraintKind as K;
     let mut l = Locals::default();
-    let point = |l: &mut Locals, h: Option<EntityId>| -> Option<PointRef> {
-        let [u, v] = uv(sys, h, wp)?;
-        Some(PointRef::P2 {
-            wp: frame,
-            uv: [l.slot(u), l.slot(v)],
-        })
-    };
-    let line = |l: &mut Locals, h: Option<EntityId>| -> Option<Ent> {
-        match &sys.entity(h?)?.kind {
-            EntityKind::LineSegment { points } => Some(Ent::Line([
-                point(l, Some(points[0]))?,
-                point(l, Some(points[1]))?,
-            ])),
-            _ => None,
+    let (pts, ents) = match c.kind {
+        K::PtPtDistance => {
+            let (Some(a), Some(b)) = (
+                point(sys, wp, &mut l, c.pt_a),
+                point(sys, wp, &mut l, c.pt_b),
+            ) else {
+                return false;
+            };
+            ([Some(a), Some(b)], Vec::new())
         }
-    };
-    let (pts, ents) = if c.kind == ConstraintKind::PtPtDistance {
-        let (Some(a), Some(b)) = (point(&mut l, c.pt_a), point(&mut l, c.pt_b)) else {
-            return false;
-        };
-        ([Some(a), Some(b)], Vec::new())
-    } else {
-        let (Some(a), Some(b)) = (line(&mut l, c.entity_a), line(&mut l, c.entity_b)) else {
-            return false;
-        };
-        ([None, None], vec![a, b])
+        K::Angle => {
+            let (Some(a), Some(b)) = (
+                line(sys, wp, &mut l, c.entity_a),
+                line(sys, wp, &mut l, c.entity_b),
+            ) else {
+                return false;
+            };
+            ([None, None], vec![a, b])
+        }
+        K::ArcLineTangent => {
+            let (Some(a), Some(b)) = (
+                arc(sys, wp, &mut l, c.entity_a),
+                line(sys, wp, &mut l, c.entity_b),
+            ) else {
+                return false;
+            };
+            ([None, None], vec![a, b])
+        }
+        K::Diameter => {
+            let Some(a) = arc(sys, wp, &mut l, c.entity_a) else {
+                return false;
+            };
+            ([None, None], vec![a])
+        }
+        _ => return false,
     };
     let eq = Equation {
         kind: EqKind::Constraint(c.kind),
-        wp: Some(frame),
+        // As the resolver has it: no workplane for a kind that ignores it (a diameter).
+        wp: (c.kind.signature().plane != PlaneRule::Ignored)
+            .then(|| super::planar::unread_frame(wp)),
         pts,
         ents,
         val: c.val,
@@ -148,6 +162,69 @@ fn planar_kernel(
     out.kernels
         .push(kernel(Owner::Constraint(c.h), l, eq, values, x));
     true
+}
+
+/// Point `h` of workplane `wp`, its `(u, v)` given slots in `l`.
+fn point(sys: &System, wp: EntityId, l: &mut Locals, h: Option<EntityId>) -> Option<PointRef> {
+    let [u, v] = uv(sys, h, wp)?;
+    Some(PointRef::P2 {
+        wp: super::planar::unread_frame(wp),
+        uv: [l.slot(u), l.slot(v)],
+    })
+}
+
+/// Line segment `h` with both ends points of workplane `wp`.
+fn line(sys: &System, wp: EntityId, l: &mut Locals, h: Option<EntityId>) -> Option<Ent> {
+    match &sys.entity(h?)?.kind {
+        EntityKind::LineSegment { points } => Some(Ent::Line([
+            point(sys, wp, l, Some(points[0]))?,
+            point(sys, wp, l, Some(points[1]))?,
+        ])),
+        _ => None,
+    }
+}
+
+/// Arc `h` of workplane `wp`, with its centre and ends points of it.
+fn arc(sys: &System, wp: EntityId, l: &mut Locals, h: Option<EntityId>) -> Option<Ent> {
+    let e = sys.entity(h?)?;
+    match &e.kind {
+        EntityKind::ArcOfCircle {
+            center, start, end, ..
+        } if e.workplane == Some(wp) => Some(Ent::Arc {
+            center: point(sys, wp, l, Some(*center))?,
+            start: point(sys, wp, l, Some(*start))?,
+            end: point(sys, wp, l, Some(*end))?,
+            wp: super::planar::unread_frame(wp),
+        }),
+        _ => None,
+    }
+}
+
+/// The implicit equation of arc `e` (its ends equally far from its centre) when it lies in a
+/// workplane with its three points: the compacted equation and its locals, as
+/// [`super::compile`] makes them by resolving the arc.
+pub(super) fn arc_radii(sys: &System, e: &crate::model::Entity) -> Option<(Equation, Locals)> {
+    let wp = e.workplane?;
+    if !matches!(
+        sys.entity(wp).map(|w| &w.kind),
+        Some(EntityKind::Workplane { .. })
+    ) {
+        return None;
+    }
+    let mut l = Locals::default();
+    let a = arc(sys, wp, &mut l, Some(e.h))?;
+    let eq = Equation {
+        kind: EqKind::ArcRadii,
+        wp: None,
+        pts: [None, None],
+        ents: vec![a],
+        val: 0.0,
+        other: false,
+        other2: false,
+        choice: 0,
+        target: [0.0; 3],
+    };
+    Some((eq, l))
 }
 
 #[cfg(test)]
@@ -192,6 +269,8 @@ mod tests {
             Entity::line(120, 1, Some(102), 110, 111),
             Entity::line(121, 1, Some(102), 110, 113),
             Entity::line(122, 1, Some(102), 112, 111),
+            Entity::arc(130, 1, 102, 101, 110, 111, 112),
+            Entity::arc(131, 1, 103, 101, 113, 110, 111),
         ];
         for e in ents {
             s.add_entity(e).expect("fresh entity");
@@ -227,6 +306,23 @@ mod tests {
             (on(14, K::Angle, 102).with_entities([120, 122, 0, 0]), true),
             (on(15, K::Angle, 102).with_entities([120, 120, 0, 0]), true),
             (on(16, K::Angle, 102).with_entities([120, 121, 0, 0]), false),
+            (
+                on(17, K::ArcLineTangent, 102).with_entities([130, 122, 0, 0]),
+                true,
+            ),
+            (
+                on(18, K::ArcLineTangent, 102).with_entities([130, 121, 0, 0]),
+                false,
+            ),
+            (
+                on(19, K::ArcLineTangent, 102).with_entities([131, 120, 0, 0]),
+                false,
+            ),
+            (on(20, K::Diameter, 102).with_entities([130, 0, 0, 0]), true),
+            (
+                on(21, K::Diameter, 103).with_entities([130, 0, 0, 0]),
+                false,
+            ),
         ];
         for (c, direct) in cases {
             let c = c.with_val(12.5);
@@ -245,5 +341,37 @@ mod tests {
                 assert!(a.links.is_empty() && a.kernels.is_empty());
             }
         }
+    }
+
+    #[test]
+    fn an_arc_of_a_workplane_is_the_compacted_resolved_arc() {
+        use super::super::planar::compact;
+        use super::super::refs::Locals;
+        use super::super::{EqKind, Equation};
+        use crate::model::ObjectId;
+        let s = sketch();
+        let r = Resolver::new(&s);
+        let arc = s.entity(130.into()).expect("arc");
+        let mut l = Locals::default();
+        let ent = r
+            .entity(ObjectId::Entity(arc.h), arc.h, &mut l)
+            .expect("resolves");
+        let mut eq = Equation {
+            kind: EqKind::ArcRadii,
+            wp: None,
+            pts: [None, None],
+            ents: vec![ent],
+            val: 0.0,
+            other: false,
+            other2: false,
+            choice: 0,
+            target: [0.0; 3],
+        };
+        let kept = compact(&mut eq, &l).expect("planar");
+        let (direct, dl) = super::arc_radii(&s, arc).expect("direct");
+        assert_eq!(format!("{direct:?}"), format!("{eq:?}"));
+        assert_eq!(dl.params, kept.params);
+        // An arc whose points leave its workplane is resolved instead.
+        assert!(super::arc_radii(&s, s.entity(131.into()).expect("arc")).is_none());
     }
 }
