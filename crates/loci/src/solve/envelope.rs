@@ -44,9 +44,8 @@ impl EnvelopeLdlt {
         }
     }
 
-    /// The number of stored entries (the envelope's size).
-    #[cfg(test)]
-    pub fn len(&self) -> usize {
+    /// The number of stored entries (the envelope's size), those of [`Self::values_mut`].
+    pub fn values_len(&self) -> usize {
         self.a.len()
     }
 
@@ -188,7 +187,7 @@ mod tests {
         }
         assert_eq!(ye[4], 0.0);
         // Each row from its first nonzero to the diagonal: 1 + 2 + 2 + 2 + 4 + 3 entries.
-        assert_eq!(e.len(), 14);
+        assert_eq!(e.values_len(), 14);
         e.values_mut().iter_mut().for_each(|v| *v = f64::NAN);
         assert!(!e.factor(0.0, 1e-10));
     }

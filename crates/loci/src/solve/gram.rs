@@ -227,7 +227,7 @@ impl Gram {
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
         match self {
-            Gram::Banded(b) => add_products(b.g.values_mut(), &b.contrib, jv),
+            Gram::Banded(b) => b.products.assemble(b.g.values_mut(), jv),
             Gram::Sparse(s) => s.assemble(jv),
         }
     }
@@ -285,8 +285,8 @@ fn envelope_len(first: &[u32]) -> usize {
 /// `G` factorised within its envelope, its rows possibly renumbered.
 pub(crate) struct Banded {
     g: EnvelopeLdlt,
-    /// `(entry of the envelope, entry of J, entry of J)`: `G[e] += J[a] * J[b]`.
-    contrib: Vec<(u32, u32, u32)>,
+    /// The products that make each entry of the envelope.
+    products: Products,
     /// The row at each position and the position of each row, when renumbered.
     order: Option<(Vec<u32>, Vec<u32>)>,
     /// A right-hand side in position order.
@@ -321,9 +321,10 @@ impl Banded {
         } else {
             Vec::new()
         };
+        let products = Products::new(g.values_len(), &contrib);
         Self {
             g,
-            contrib,
+            products,
             order,
             tmp,
         }
@@ -356,11 +357,61 @@ impl Banded {
     }
 }
 
-/// `v = 0`, then `v[e] += jv[a] * jv[b]` for every `(e, a, b)`.
-fn add_products(v: &mut [f64], contrib: &[(u32, u32, u32)], jv: &[f64]) {
-    v.iter_mut().for_each(|x| *x = 0.0);
-    for &(e, a, b) in contrib {
-        v[e as usize] += jv[a as usize] * jv[b as usize];
+/// The products of Jacobian entries that make `G`, grouped by the entry of `G` they add to:
+/// entry `e` is the sum of `jv[a] * jv[b]` over `pairs[ptr[e]..ptr[e + 1]]`. Every entry is
+/// written once, so none is cleared first, and entries can be computed in parallel runs.
+struct Products {
+    ptr: Vec<u32>,
+    pairs: Vec<(u32, u32)>,
+}
+
+/// From this many products on, `G` is assembled on all cores.
+#[cfg(feature = "parallel")]
+const PARALLEL_PRODUCTS: usize = 1 << 16;
+
+impl Products {
+    /// From `(entry of G, entry of J, entry of J)` triples for a `G` of `len` entries; the
+    /// products of each entry keep their order, and so the sum its rounding.
+    fn new(len: usize, contrib: &[(u32, u32, u32)]) -> Self {
+        let mut ptr = vec![0u32; len + 1];
+        for &(e, _, _) in contrib {
+            ptr[e as usize + 1] += 1;
+        }
+        for e in 0..len {
+            ptr[e + 1] += ptr[e];
+        }
+        let mut fill = ptr.clone();
+        let mut pairs = vec![(0u32, 0u32); contrib.len()];
+        for &(e, a, b) in contrib {
+            let f = &mut fill[e as usize];
+            pairs[*f as usize] = (a, b);
+            *f += 1;
+        }
+        Self { ptr, pairs }
+    }
+
+    /// `v[e]` for every entry, from the Jacobian values `jv`.
+    fn assemble(&self, v: &mut [f64], jv: &[f64]) {
+        let run = |v: &mut [f64], e0: usize| {
+            for (k, x) in v.iter_mut().enumerate() {
+                let (s, t) = (self.ptr[e0 + k] as usize, self.ptr[e0 + k + 1] as usize);
+                let mut acc = 0.0;
+                for &(a, b) in &self.pairs[s..t] {
+                    acc += jv[a as usize] * jv[b as usize];
+                }
+                *x = acc;
+            }
+        };
+        #[cfg(feature = "parallel")]
+        if self.pairs.len() >= PARALLEL_PRODUCTS {
+            use rayon::prelude::*;
+            let chunk = v.len().div_ceil(4 * rayon::current_num_threads()).max(1024);
+            v.par_chunks_mut(chunk)
+                .enumerate()
+                .for_each(|(i, c)| run(c, i * chunk));
+            return;
+        }
+        run(v, 0);
     }
 }
 
@@ -369,8 +420,8 @@ pub(crate) struct SparseGram {
     n: usize,
     pattern: SymbolicSparseColMat<usize>,
     vals: Vec<f64>,
-    /// `(entry of G, entry of J, entry of J)`: `G[e] += J[a] * J[b]`.
-    contrib: Vec<(u32, u32, u32)>,
+    /// The products that make each entry of `G`.
+    products: Products,
     symbolic: SymbolicCholesky<usize>,
     l_values: Vec<f64>,
     signs: Vec<i8>,
@@ -410,7 +461,7 @@ impl SparseGram {
             n: nrows,
             pattern,
             vals: vec![0.0; nnz],
-            contrib,
+            products: Products::new(nnz, &contrib),
             symbolic,
             l_values,
             signs: vec![1; nrows],
@@ -422,7 +473,7 @@ impl SparseGram {
 
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
-        add_products(&mut self.vals, &self.contrib, jv);
+        self.products.assemble(&mut self.vals, jv);
     }
 
     /// Factorises `G + lambda I` (with `G` from the last [`Gram::assemble`]); pivots at or
