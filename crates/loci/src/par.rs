@@ -38,13 +38,16 @@ where
         .collect()
 }
 
-/// Drops `items`, spread over the cores when there are many: freeing the thousands of small
-/// components of a large solve costs about as much as building them did.
-pub(crate) fn discard<T: Send>(items: Vec<T>) {
+/// Drops `items`: when there are many, on the thread pool after the caller has moved on, and
+/// spread over the cores. Freeing the thousands of small components of a large solve costs
+/// about as much as building them did, and the caller is waiting for its report, not for that.
+pub(crate) fn discard<T: Send + 'static>(items: Vec<T>) {
     #[cfg(feature = "parallel")]
     if items.len() >= MIN_PARALLEL {
-        use rayon::prelude::*;
-        items.into_par_iter().for_each(drop);
+        rayon::spawn(move || {
+            use rayon::prelude::*;
+            items.into_par_iter().for_each(drop);
+        });
         return;
     }
     drop(items);
