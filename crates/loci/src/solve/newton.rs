@@ -251,7 +251,9 @@ impl Component {
         if self.rows >= PARALLEL_ROWS {
             let threads = rayon::current_num_threads().min(8);
             if threads > 1 {
-                let per = self.blocks.len().div_ceil(threads);
+                // Several runs per thread, so that a thread held up by the machine leaves its
+                // share to the others.
+                let per = self.blocks.len().div_ceil(4 * threads);
                 let Out {
                     mut r,
                     mut jn,
