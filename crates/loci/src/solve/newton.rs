@@ -458,7 +458,7 @@ impl Component {
             let Some(gram) = gram_slot.as_mut() else {
                 break;
             };
-            gram.assemble(&jn);
+            gram.assemble(jn);
             factored = gram.factor(0.0, cfg.rank_tolerance);
             let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
             if max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite()) {
@@ -483,7 +483,7 @@ impl Component {
                 }
             };
             // The normalised residual, the quantity the step minimises.
-            let m0 = merit(&r, &inv);
+            let m0 = merit(r, inv);
             // Non-monotone acceptance (Grippo, Lampariello and Lucidi, 1986): a step may raise the
             // merit above the current one as long as it stays below the largest of the last few,
             // and below ten times the current one. Long chains that must swing far take fewer,
@@ -522,8 +522,8 @@ impl Component {
                     for c in 0..ncols {
                         xt[c] = x[c] + alpha * dx[c];
                     }
-                    self.residuals(kernels, &xt, rt, xs);
-                    let mt = merit(&rt, &inv);
+                    self.residuals(kernels, xt, rt, xs);
+                    let mt = merit(rt, inv);
                     if mt.is_finite() && (mt < m_ref.min(m0 * 10.0) || mt == 0.0) {
                         accepted = true;
                         break;
@@ -544,8 +544,8 @@ impl Component {
                         for c in 0..ncols {
                             xt[c] = x[c] + dx[c];
                         }
-                        self.residuals(kernels, &xt, rt, xs);
-                        let mt = merit(&rt, &inv);
+                        self.residuals(kernels, xt, rt, xs);
+                        let mt = merit(rt, inv);
                         if mt.is_finite() && (mt < m0 || mt == 0.0) {
                             accepted = true;
                             break;
@@ -562,7 +562,7 @@ impl Component {
                 }
             }
             alpha_prev = alpha;
-            x.copy_from_slice(&xt);
+            x.copy_from_slice(xt);
             // A full Newton step that lands within tolerance and moved the unknowns by next to
             // nothing ends the solve without another Jacobian: the rank and the dependencies
             // are read from the factorisation this step was taken with, at a point closer than
@@ -594,7 +594,7 @@ impl Component {
             if cfg.find_failed {
                 for &k in &fin.dropped {
                     fin.dependencies
-                        .push(dependencies(gram, &self.columns, &jn, k, m));
+                        .push(dependencies(gram, &self.columns, jn, k, m));
                 }
             }
         } else {
