@@ -229,7 +229,10 @@ pub fn markdown(r: &Results, command: &str) -> String {
          `bench/src/peers.rs` for ezpz and PlaneGCS).\n\
          - Every solver runs in its own worker process: loci and ezpz called as Rust libraries, \
          SolveSpace through a C program over Debian's libslvs and through PyPI `slvs` in a venv, \
-         PlaneGCS through node. Times are the solve call alone (building the problem in the \
+         PlaneGCS through node. The Rust workers allocate through mimalloc: with glibc's malloc \
+         the large blocks of a big solve go back to the kernel when freed, and every repetition \
+         would pay page faults again for the memory it touches (about a third of a \
+         10,000-element solve). Times are the solve call alone (building the problem in the \
          solver's API is timed separately, below), the median of up to {} runs; runs stop early \
          once the solves add up to {} s. Problems a solver solves in under {} ms are timed in {} \
          such rounds, every solver in turn, and the median is taken over all of them, so that a \
