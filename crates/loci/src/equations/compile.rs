@@ -323,18 +323,7 @@ pub(crate) fn resolve_constraint(
             ents.push(r.entity(owner, h, &mut l)?);
         }
     }
-    let eq = Equation {
-        kind: EqKind::Constraint(c.kind),
-        wp,
-        pts,
-        ents,
-        val: c.val,
-        other: c.other,
-        other2: c.other2,
-        choice: 0,
-        target: [0.0; 3],
-    };
-    Ok((eq, l))
+    Ok((Equation::of_constraint(c, wp, pts, ents), l))
 }
 
 fn compile_constraint(

@@ -146,19 +146,10 @@ fn planar_kernel(
         }
         _ => return false,
     };
-    let eq = Equation {
-        kind: EqKind::Constraint(c.kind),
-        // As the resolver has it: no workplane for a kind that ignores it (a diameter).
-        wp: (c.kind.signature().plane != PlaneRule::Ignored)
-            .then(|| super::planar::unread_frame(wp)),
-        pts,
-        ents,
-        val: c.val,
-        other: c.other,
-        other2: c.other2,
-        choice: 0,
-        target: [0.0; 3],
-    };
+    // As the resolver has it: no workplane for a kind that ignores it (a diameter).
+    let frame =
+        (c.kind.signature().plane != PlaneRule::Ignored).then(|| super::planar::unread_frame(wp));
+    let eq = Equation::of_constraint(c, frame, pts, ents);
     out.kernels
         .push(kernel(Owner::Constraint(c.h), l, eq, values, x));
     true

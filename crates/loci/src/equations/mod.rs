@@ -66,6 +66,29 @@ pub(crate) struct Equation {
     pub target: [f64; 3],
 }
 
+impl Equation {
+    /// The equation of constraint `c` over its resolved workplane, points and entities, with
+    /// no branch chosen yet.
+    pub(crate) fn of_constraint(
+        c: &crate::model::Constraint,
+        wp: Option<Frame>,
+        pts: [Option<PointRef>; 2],
+        ents: Vec<Ent>,
+    ) -> Self {
+        Self {
+            kind: EqKind::Constraint(c.kind),
+            wp,
+            pts,
+            ents,
+            val: c.val,
+            other: c.other,
+            other2: c.other2,
+            choice: 0,
+            target: [0.0; 3],
+        }
+    }
+}
+
 /// Up to four residuals, written by an equation.
 pub(crate) struct Rows<S> {
     pub v: [S; 4],
