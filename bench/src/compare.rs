@@ -54,7 +54,7 @@ impl Settings {
             reps: if quick { 3 } else { 31 },
             budget_s: if quick { 0.5 } else { 2.0 },
             limit: Duration::from_secs(if quick { 20 } else { 30 }),
-            rounds: if quick { 1 } else { 3 },
+            rounds: if quick { 1 } else { 5 },
         }
     }
 
