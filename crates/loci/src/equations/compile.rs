@@ -170,18 +170,7 @@ fn compile_entities(
         {
             continue;
         }
-        let eq = Equation {
-            kind,
-            wp: None,
-            pts: [None, None],
-            ents,
-            val,
-            other: false,
-            other2: false,
-            choice: 0,
-            target,
-        };
-        let mut eq = eq;
+        let mut eq = Equation::of_entity(kind, ents, val, target);
         let l = super::planar::compact(&mut eq, &l).unwrap_or(l);
         out.push(kernel(Owner::Entity(e.h), l, eq, values, x));
     }

@@ -110,41 +110,36 @@ fn planar_kernel(
 ) -> bool {
     use ConstraintKind as K;
     let mut l = Locals::default();
-    let (pts, ents) = match c.kind {
-        K::PtPtDistance => {
-            let (Some(a), Some(b)) = (
-                point(sys, wp, &mut l, c.pt_a),
-                point(sys, wp, &mut l, c.pt_b),
-            ) else {
-                return false;
-            };
-            ([Some(a), Some(b)], Vec::new())
-        }
-        K::Angle => {
-            let (Some(a), Some(b)) = (
-                line(sys, wp, &mut l, c.entity_a),
-                line(sys, wp, &mut l, c.entity_b),
-            ) else {
-                return false;
-            };
-            ([None, None], vec![a, b])
-        }
-        K::ArcLineTangent => {
-            let (Some(a), Some(b)) = (
-                arc(sys, wp, &mut l, c.entity_a),
-                line(sys, wp, &mut l, c.entity_b),
-            ) else {
-                return false;
-            };
-            ([None, None], vec![a, b])
-        }
-        K::Diameter => {
-            let Some(a) = arc(sys, wp, &mut l, c.entity_a) else {
-                return false;
-            };
-            ([None, None], vec![a])
-        }
-        _ => return false,
+    // Points and entities in the order the resolver meets them, so that the slots agree.
+    let parts = (|| {
+        Some(match c.kind {
+            K::PtPtDistance => (
+                [
+                    Some(point(sys, wp, &mut l, c.pt_a)?),
+                    Some(point(sys, wp, &mut l, c.pt_b)?),
+                ],
+                Vec::new(),
+            ),
+            K::Angle => (
+                [None, None],
+                vec![
+                    line(sys, wp, &mut l, c.entity_a)?,
+                    line(sys, wp, &mut l, c.entity_b)?,
+                ],
+            ),
+            K::ArcLineTangent => (
+                [None, None],
+                vec![
+                    arc(sys, wp, &mut l, c.entity_a)?,
+                    line(sys, wp, &mut l, c.entity_b)?,
+                ],
+            ),
+            K::Diameter => ([None, None], vec![arc(sys, wp, &mut l, c.entity_a)?]),
+            _ => return None,
+        })
+    })();
+    let Some((pts, ents)) = parts else {
+        return false;
     };
     // As the resolver has it: no workplane for a kind that ignores it (a diameter).
     let frame =
@@ -204,18 +199,10 @@ pub(super) fn arc_radii(sys: &System, e: &crate::model::Entity) -> Option<(Equat
     }
     let mut l = Locals::default();
     let a = arc(sys, wp, &mut l, Some(e.h))?;
-    let eq = Equation {
-        kind: EqKind::ArcRadii,
-        wp: None,
-        pts: [None, None],
-        ents: vec![a],
-        val: 0.0,
-        other: false,
-        other2: false,
-        choice: 0,
-        target: [0.0; 3],
-    };
-    Some((eq, l))
+    Some((
+        Equation::of_entity(EqKind::ArcRadii, vec![a], 0.0, [0.0; 3]),
+        l,
+    ))
 }
 
 #[cfg(test)]
@@ -347,17 +334,7 @@ mod tests {
         let ent = r
             .entity(ObjectId::Entity(arc.h), arc.h, &mut l)
             .expect("resolves");
-        let mut eq = Equation {
-            kind: EqKind::ArcRadii,
-            wp: None,
-            pts: [None, None],
-            ents: vec![ent],
-            val: 0.0,
-            other: false,
-            other2: false,
-            choice: 0,
-            target: [0.0; 3],
-        };
+        let mut eq = Equation::of_entity(EqKind::ArcRadii, vec![ent], 0.0, [0.0; 3]);
         let kept = compact(&mut eq, &l).expect("planar");
         let (direct, dl) = super::arc_radii(&s, arc).expect("direct");
         assert_eq!(format!("{direct:?}"), format!("{eq:?}"));

@@ -87,6 +87,22 @@ impl Equation {
             target: [0.0; 3],
         }
     }
+
+    /// An entity's implicit equation of `kind` over its resolved entities, with the constants
+    /// it carries (`val`, `target`).
+    pub(crate) fn of_entity(kind: EqKind, ents: Vec<Ent>, val: f64, target: [f64; 3]) -> Self {
+        Self {
+            kind,
+            wp: None,
+            pts: [None, None],
+            ents,
+            val,
+            other: false,
+            other2: false,
+            choice: 0,
+            target,
+        }
+    }
 }
 
 /// Up to four residuals, written by an equation.
