@@ -162,14 +162,9 @@ fn solve_cached(
     // Values are written back only when every constraint holds, as libslvs does: a failed
     // solve leaves the caller's parameters as they were.
     if report.outcome.is_ok() {
-        let handles: Vec<(ParamId, bool)> = sys
-            .params()
-            .iter()
-            .map(|p| (p.h, p.group == group))
-            .collect();
-        for (p, (h, unknown)) in handles.into_iter().enumerate() {
-            if unknown {
-                sys.set_value(h, values[p]);
+        for (p, &v) in sys.params_mut().zip(&values) {
+            if p.group == group {
+                p.val = v;
             }
         }
     }
