@@ -1,6 +1,6 @@
 //! Typed errors: each names the object that is wrong and what was expected.
 
-use crate::model::{ConstraintId, ConstraintKind, EntityId, EntityType, ObjectId};
+use crate::model::{ConstraintId, ConstraintKind, EntityId, EntityType, GroupId, ObjectId};
 use thiserror::Error;
 
 /// Something in a [`System`](crate::System) that cannot be solved as given.
@@ -90,6 +90,14 @@ pub enum SolveError {
     /// The model is not valid.
     #[error(transparent)]
     Model(#[from] ModelError),
+    /// No parameter, entity or constraint belongs to the group asked for.
+    #[error("{group} does not exist; the groups of this system are {}", list_groups(.existing))]
+    UnknownGroup {
+        /// The group asked for.
+        group: GroupId,
+        /// The groups that have objects, in increasing order.
+        existing: Vec<GroupId>,
+    },
     /// A dragged parameter does not exist.
     #[error("dragged parameter {0} does not exist")]
     UnknownDragged(u32),
@@ -103,4 +111,12 @@ pub enum SolveError {
         /// The allowed range.
         expected: &'static str,
     },
+}
+
+fn list_groups(groups: &[GroupId]) -> String {
+    if groups.is_empty() {
+        return "none (it is empty)".to_string();
+    }
+    let names: Vec<String> = groups.iter().map(|g| g.0.to_string()).collect();
+    names.join(", ")
 }

@@ -47,7 +47,7 @@ pub use diagnose::{
 };
 pub use error::{ModelError, SolveError};
 pub use model::{
-    Constraint, ConstraintId, ConstraintKind, Entity, EntityId, EntityKind, EntityType, GroupId,
-    ObjectId, Param, ParamId, PlaneRule, Signature, System, Want, FIELD_NAMES,
+    Constraint, ConstraintId, ConstraintKind, ConstraintMut, Entity, EntityId, EntityKind,
+    EntityType, GroupId, ObjectId, Param, ParamId, PlaneRule, Signature, System, Want, FIELD_NAMES,
 };
 pub use solve::{solve, Config, Outcome, Report, Solver};

@@ -636,6 +636,11 @@ proptest! {
             Err(SolveError::UnknownDragged(h)) => {
                 prop_assert!(sys.param(ParamId(h)).is_none());
             }
+            Err(SolveError::UnknownGroup { group: g, existing }) => {
+                prop_assert_eq!(g, group.into());
+                prop_assert!(!existing.contains(&g));
+                prop_assert_eq!(existing, sys.groups());
+            }
             Err(e) => prop_assert!(false, "unexpected error {e}"),
         }
         // The JSON round trip of whatever was built parses back to the same lists.

@@ -329,18 +329,34 @@ fn a_free_normal_has_three_dof_from_its_unit_length() {
 }
 
 #[test]
-fn empty_system_is_okay_with_nothing_to_do() {
+fn a_group_with_nothing_in_it_is_an_error_naming_the_groups_there_are() {
+    // An empty system has no group to solve: a wrong group number or an empty file, which a
+    // silent okay with DOF 0 would hide.
     let mut sys = System::new();
-    let rep = sys.solve_group(1).unwrap();
-    assert_eq!(rep.outcome, Outcome::Okay);
-    assert_eq!(rep.dof, 0);
-    assert_eq!(rep.unknowns, 0);
-    assert_eq!(rep.equations, 0);
-    assert!(rep.failed.is_empty());
-    // A group that exists nowhere in a non-empty system is just as empty.
+    let err = sys.solve_group(1).unwrap_err();
+    assert!(
+        matches!(err, loci::SolveError::UnknownGroup { .. }),
+        "{err:?}"
+    );
+    // A group that exists nowhere in a non-empty system: the message lists the real ones.
     let (mut s, _, _) = triangle([30.0, 40.0, 50.0]);
+    let err = s.sys.solve_group(9).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        format!(
+            "group 9 does not exist; the groups of this system are {}",
+            s.sys
+                .groups()
+                .iter()
+                .map(|g| g.0.to_string())
+                .collect::<Vec<_>>()
+                .join(", ")
+        )
+    );
+    // A group with parameters but no constraints exists: okay, every parameter free.
+    s.sys.add_param(loci::Param::new(9999, 9, 1.0)).unwrap();
     let rep = s.sys.solve_group(9).unwrap();
-    assert_eq!((rep.outcome, rep.dof, rep.unknowns), (Outcome::Okay, 0, 0));
+    assert_eq!((rep.outcome, rep.dof, rep.unknowns), (Outcome::Okay, 1, 1));
 }
 
 /// Group 2: two points 10 apart on a horizontal. Group 3: a point 6 from each, referring to

@@ -1,7 +1,7 @@
 //! Cubic Bezier curves: tangency to lines and to other curves.
 
 use super::circles::arc_radius_vector;
-use super::points::{dominant_axis, push_two};
+use super::points::push_across;
 use super::refs::{Ent, Frame, Geo};
 use super::{Equation, Rows};
 use crate::geom::{Scalar, Vec3};
@@ -33,10 +33,6 @@ fn tangent<S: Scalar>(ent: &Ent, g: &Geo<S>, at_end: bool, w: Option<&Frame>) ->
     }
 }
 
-pub(super) fn choose_cubic_line(e: &Equation, g: &Geo<f64>) -> u8 {
-    dominant_axis(tangent(e.ent(0), g, e.other, None))
-}
-
 /// Cubic `entity_a` is tangent to line `entity_b` at its start (end with `other`).
 pub(super) fn cubic_line_tangent<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let w = e.wp();
@@ -45,7 +41,7 @@ pub(super) fn cubic_line_tangent<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut 
     let c = t.cross(d).scale(S::cst(1.0) / (t.norm() * d.norm()));
     match w {
         Some(_) => out.push(c.z),
-        None => push_two(c, e.choice, out),
+        None => push_across(c, t, out),
     }
 }
 

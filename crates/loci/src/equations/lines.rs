@@ -1,6 +1,6 @@
 //! Lines: distances from points to lines, lengths, angles, parallel and perpendicular.
 
-use super::points::{dominant_axis, push_two};
+use super::points::push_across;
 use super::refs::{Ent, Frame, Geo, PointRef};
 use super::{Equation, Rows};
 use crate::geom::{Scalar, Vec3};
@@ -37,10 +37,6 @@ pub(super) fn pt_line_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Ro
     out.push(pt_line(g, e.pt(0), e.line(0), e.wp()) - e.val);
 }
 
-pub(super) fn choose_pt_on_line(e: &Equation, g: &Geo<f64>) -> u8 {
-    dominant_axis(g.line_dir(e.line(0), None))
-}
-
 /// `pt_a` lies on line `entity_a`: one row in a workplane, two in space.
 pub(super) fn pt_on_line<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let w = e.wp();
@@ -52,7 +48,7 @@ pub(super) fn pt_on_line<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>)
         .scale(S::cst(1.0) / d.norm());
     match w {
         Some(_) => out.push(c.z),
-        None => push_two(c, e.choice, out),
+        None => push_across(c, d, out),
     }
 }
 
@@ -198,17 +194,13 @@ pub(super) fn equal_angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>
     }
 }
 
-pub(super) fn choose_parallel(e: &Equation, g: &Geo<f64>) -> u8 {
-    dominant_axis(vector(e, g, 0, None))
-}
-
 /// Lines `entity_a` and `entity_b` are parallel: one row in a workplane, two in space.
 pub(super) fn parallel<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let (a, b) = dirs(e, g, 0, 1);
     let c = a.cross(b).scale(S::cst(1.0) / (a.norm() * b.norm()));
     match e.wp {
         Some(_) => out.push(c.z),
-        None => push_two(c, e.choice, out),
+        None => push_across(c, a, out),
     }
 }
 

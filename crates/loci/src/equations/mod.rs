@@ -227,12 +227,8 @@ impl Equation {
         let g = Geo { x };
         use ConstraintKind as K;
         self.choice = match self.kind {
-            EqKind::Constraint(K::Parallel) => lines::choose_parallel(self, &g),
-            EqKind::Constraint(K::PtOnLine) => lines::choose_pt_on_line(self, &g),
             EqKind::Constraint(K::Angle) => lines::choose_angle(self, &g),
             EqKind::Constraint(K::EqualAngle) => lines::choose_equal_angle(self, &g),
-            EqKind::Constraint(K::CubicLineTangent) => curves::choose_cubic_line(self, &g),
-            EqKind::Constraint(K::Symmetric) => points::choose_symmetric(self, &g),
             EqKind::Constraint(K::SameOrientation) => {
                 orientation::choose_same_orientation(self, &g)
             }

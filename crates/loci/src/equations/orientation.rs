@@ -1,6 +1,6 @@
 //! Normals: unit quaternions and equal orientation.
 
-use super::points::{dominant_axis, push_two};
+use super::points::push_across;
 use super::refs::{Ent, Geo};
 use super::{Equation, Rows};
 use crate::geom::{Quat, Scalar};
@@ -33,14 +33,11 @@ pub(super) fn rotated<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     out.push(own.z - want.z);
 }
 
-/// The branch of `same_orientation`: the dominant axis of `entity_a`'s N (which two
-/// components of the cross product to keep, in bits 0-1), and in bit 2 whether U of `a`
-/// is held perpendicular to V of `b` (else to U of `b`), whichever is nearer to holding.
+/// The branch of `same_orientation`: 1 when U of `a` is held perpendicular to V of `b`
+/// (else to U of `b`), whichever is nearer to holding at the start.
 pub(super) fn choose_same_orientation(e: &Equation, g: &Geo<f64>) -> u8 {
     let (a, b) = normals(e, g);
-    let axis = dominant_axis(a.n());
-    let uv = a.u().dot(b.v()).abs() < a.u().dot(b.u()).abs();
-    axis | if uv { 4 } else { 0 }
+    u8::from(a.u().dot(b.v()).abs() < a.u().dot(b.u()).abs())
 }
 
 fn normals<S: Scalar>(e: &Equation, g: &Geo<S>) -> (Quat<S>, Quat<S>) {
@@ -56,8 +53,8 @@ fn normals<S: Scalar>(e: &Equation, g: &Geo<S>) -> (Quat<S>, Quat<S>) {
 /// to a quarter or half turn in the plane. Three rows.
 pub(super) fn same_orientation<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let (a, b) = normals(e, g);
-    push_two(a.n().cross(b.n()), e.choice & 3, out);
-    out.push(if e.choice & 4 != 0 {
+    push_across(a.n().cross(b.n()), a.n(), out);
+    out.push(if e.choice == 1 {
         a.u().dot(b.v())
     } else {
         a.u().dot(b.u())

@@ -112,18 +112,29 @@ pub(super) fn dominant_axis(v: Vec3<f64>) -> u8 {
     }
 }
 
-/// The two components of `c` other than `skip`: the informative ones of a cross product
-/// with a vector whose dominant axis is `skip`.
-pub(super) fn push_two<S: Scalar>(c: Vec3<S>, skip: u8, out: &mut Rows<S>) {
+/// Two rows that vanish exactly when `c = v × w` does, for any `w`: the components of `c`
+/// other than the dominant axis of `v`, taken at the current point.
+///
+/// `c · v = 0` always, so if the two kept components are zero, `c_k v_k = 0` for the dropped
+/// axis `k`; `v_k` is the largest component of `v` in magnitude, non-zero for any `v ≠ 0`,
+/// hence `c = 0` too. Three rows would say the same with a Jacobian of rank two at every
+/// root (a dependency the rank test would report); two rows over an axis fixed once, at the
+/// start, have spurious roots wherever `v` and `w` both turn perpendicular to that axis (two
+/// lines 90 degrees apart in the plane of the other two axes). Choosing the axis from the
+/// values being evaluated keeps both rows informative and every root a true one. The choice
+/// changes only where two components of `v` tie in magnitude; the dual numbers and the
+/// values take it from the same real parts, so derivatives match the residuals.
+pub(super) fn push_across<S: Scalar>(c: Vec3<S>, v: Vec3<S>, out: &mut Rows<S>) {
+    let skip = dominant_axis(Vec3 {
+        x: v.x.val(),
+        y: v.y.val(),
+        z: v.z.val(),
+    });
     for i in 0..3u8 {
         if i != skip {
             out.push(c.at(i as usize));
         }
     }
-}
-
-pub(super) fn choose_symmetric(e: &Equation, g: &Geo<f64>) -> u8 {
-    dominant_axis(g.plane_normal(e.frame(0)))
 }
 
 /// `pt_a` and `pt_b` mirror each other in plane `entity_a`: the midpoint is on the plane and
@@ -142,11 +153,7 @@ pub(super) fn symmetric<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) 
             let (a, b) = (g.pos(e.pt(0)), g.pos(e.pt(1)));
             let mid = a.plus(b).scale_f(0.5);
             out.push(mid.minus(g.v3(f.origin)).dot(n));
-            push_two(
-                b.minus(a).cross(n).scale(S::cst(1.0) / n.norm()),
-                e.choice,
-                out,
-            );
+            push_across(b.minus(a).cross(n).scale(S::cst(1.0) / n.norm()), n, out);
         }
         Some(w) => {
             let (a, b) = (g.at(e.pt(0), Some(w)), g.at(e.pt(1), Some(w)));

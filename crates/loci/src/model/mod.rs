@@ -12,4 +12,4 @@ pub use constraint::{Constraint, ConstraintKind, PlaneRule, Signature, Want, FIE
 pub use entity::{Entity, EntityKind, EntityType};
 pub use handle::{ConstraintId, EntityId, GroupId, ObjectId, ParamId};
 pub use param::Param;
-pub use system::System;
+pub use system::{ConstraintMut, System};

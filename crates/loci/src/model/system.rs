@@ -1,15 +1,22 @@
 //! The system: every parameter, entity and constraint, looked up by handle.
 
 use super::index::HandleIndex;
-use super::{Constraint, ConstraintId, Entity, EntityId, ObjectId, Param, ParamId};
+use super::{Constraint, ConstraintId, Entity, EntityId, GroupId, ObjectId, Param, ParamId};
 use crate::error::ModelError;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use std::ops::{Deref, DerefMut};
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// A whole problem: parameters, entities and constraints, kept in the order they were added.
 ///
 /// Handles are checked for zero and duplicates as objects are added; references between
 /// objects are checked by [`System::validate`], which every solve runs first.
-#[derive(Clone, Debug, Default)]
+///
+/// Every structural edit (adding or removing an object, changing what a constraint is or
+/// refers to, moving a parameter to another group) advances [`System::revision`]; value edits
+/// (parameter values, constraint dimensions) do not. A [`crate::Solver`] keeps its compiled
+/// structure exactly as long as the system and its revision are the ones it compiled.
+#[derive(Debug)]
 pub struct System {
     params: Vec<Param>,
     entities: Vec<Entity>,
@@ -17,6 +24,49 @@ pub struct System {
     param_ix: HandleIndex,
     entity_ix: HandleIndex,
     constraint_ix: HandleIndex,
+    /// Which system this is: unique among the systems of the process, a clone included.
+    id: u64,
+    /// Advanced by every structural edit.
+    revision: u64,
+}
+
+/// The source of [`System`] identities.
+static NEXT_SYSTEM: AtomicU64 = AtomicU64::new(1);
+
+fn fresh_id() -> u64 {
+    NEXT_SYSTEM.fetch_add(1, Ordering::Relaxed)
+}
+
+impl Default for System {
+    fn default() -> Self {
+        Self {
+            params: Vec::new(),
+            entities: Vec::new(),
+            constraints: Vec::new(),
+            param_ix: HandleIndex::default(),
+            entity_ix: HandleIndex::default(),
+            constraint_ix: HandleIndex::default(),
+            id: fresh_id(),
+            revision: 0,
+        }
+    }
+}
+
+impl Clone for System {
+    /// A copy with an identity of its own: a solver that compiled the original does not take
+    /// the copy for it.
+    fn clone(&self) -> Self {
+        Self {
+            params: self.params.clone(),
+            entities: self.entities.clone(),
+            constraints: self.constraints.clone(),
+            param_ix: self.param_ix.clone(),
+            entity_ix: self.entity_ix.clone(),
+            constraint_ix: self.constraint_ix.clone(),
+            id: fresh_id(),
+            revision: self.revision,
+        }
+    }
 }
 
 impl System {
@@ -24,6 +74,24 @@ impl System {
     #[must_use]
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// The structural revision: advanced by every edit that changes what the equations are
+    /// (adding or removing objects, changing a constraint's kind, references, workplane, group
+    /// or flags, a parameter's group), and by nothing that changes values only.
+    #[must_use]
+    pub fn revision(&self) -> u64 {
+        self.revision
+    }
+
+    /// This system's identity and revision: equal for two calls exactly when nothing
+    /// structural changed in between, on the same system.
+    pub(crate) fn structure_key(&self) -> (u64, u64) {
+        (self.id, self.revision)
+    }
+
+    fn touch(&mut self) {
+        self.revision += 1;
     }
 
     /// Adds a parameter.
@@ -51,6 +119,7 @@ impl System {
         }
         self.param_ix.insert(p.h.0, self.params.len());
         self.params.push(p);
+        self.touch();
         Ok(p.h)
     }
 
@@ -73,6 +142,7 @@ impl System {
         let h = e.h;
         self.entity_ix.insert(h.0, self.entities.len());
         self.entities.push(e);
+        self.touch();
         Ok(h)
     }
 
@@ -102,6 +172,7 @@ impl System {
         let h = c.h;
         self.constraint_ix.insert(h.0, self.constraints.len());
         self.constraints.push(c);
+        self.touch();
         Ok(h)
     }
 
@@ -111,6 +182,7 @@ impl System {
         let c = self.constraints.remove(i);
         self.constraint_ix
             .update_positions(|v| if v > i { v - 1 } else { v });
+        self.touch();
         Some(c)
     }
 
@@ -179,16 +251,56 @@ impl System {
         }
     }
 
-    /// Mutable access to every parameter value, in [`System::params`] order.
+    /// Mutable access to every parameter, in [`System::params`] order. A parameter may change
+    /// group here, so this counts as a structural edit; to change values only, use
+    /// [`System::values_mut`] or [`System::set_value`].
     pub fn params_mut(&mut self) -> impl Iterator<Item = &mut Param> {
+        self.touch();
         self.params.iter_mut()
     }
 
-    /// Mutable access to a constraint, e.g. to change its value between solves.
-    pub fn constraint_mut(&mut self, h: ConstraintId) -> Option<&mut Constraint> {
-        self.constraint_ix
-            .get(h.0)
-            .map(|i| &mut self.constraints[i])
+    /// Mutable access to every parameter value, in [`System::params`] order: a value edit,
+    /// which keeps a [`crate::Solver`]'s compiled structure.
+    pub fn values_mut(&mut self) -> impl Iterator<Item = &mut f64> {
+        self.params.iter_mut().map(|p| &mut p.val)
+    }
+
+    /// Every group that a parameter, entity or constraint belongs to, in increasing order.
+    #[must_use]
+    pub fn groups(&self) -> Vec<GroupId> {
+        let mut g: Vec<GroupId> = self
+            .params
+            .iter()
+            .map(|p| p.group)
+            .chain(self.entities.iter().map(|e| e.group))
+            .chain(self.constraints.iter().map(|c| c.group))
+            .collect();
+        g.sort_unstable();
+        g.dedup();
+        g
+    }
+
+    /// Writes `values` (one per parameter, in [`System::params`] order) into the parameters of
+    /// `group`: a value edit.
+    pub(crate) fn write_group_values(&mut self, group: GroupId, values: &[f64]) {
+        for (p, &v) in self.params.iter_mut().zip(values) {
+            if p.group == group {
+                p.val = v;
+            }
+        }
+    }
+
+    /// Mutable access to a constraint. Changing only `val` is a value edit; changing anything
+    /// else (kind, workplane, references, group, flags) is a structural one, noticed when the
+    /// returned guard is dropped. The handle cannot change here: an edited `h` is put back.
+    pub fn constraint_mut(&mut self, h: ConstraintId) -> Option<ConstraintMut<'_>> {
+        let i = self.constraint_ix.get(h.0)?;
+        let before = self.constraints[i].clone();
+        Some(ConstraintMut {
+            sys: self,
+            i,
+            before,
+        })
     }
 
     /// Builds a system from lists, checking handles as [`System::add_param`] and friends do.
@@ -211,6 +323,41 @@ impl System {
             s.add_constraint(c)?;
         }
         Ok(s)
+    }
+}
+
+/// A constraint borrowed for editing from [`System::constraint_mut`]; on drop it advances the
+/// system's revision if anything but the value changed.
+pub struct ConstraintMut<'a> {
+    sys: &'a mut System,
+    i: usize,
+    before: Constraint,
+}
+
+impl Deref for ConstraintMut<'_> {
+    type Target = Constraint;
+    fn deref(&self) -> &Constraint {
+        &self.sys.constraints[self.i]
+    }
+}
+
+impl DerefMut for ConstraintMut<'_> {
+    fn deref_mut(&mut self) -> &mut Constraint {
+        &mut self.sys.constraints[self.i]
+    }
+}
+
+impl Drop for ConstraintMut<'_> {
+    fn drop(&mut self) {
+        let now = &mut self.sys.constraints[self.i];
+        now.h = self.before.h;
+        let structural = Constraint {
+            val: self.before.val,
+            ..now.clone()
+        } != self.before;
+        if structural {
+            self.sys.touch();
+        }
     }
 }
 

@@ -13,7 +13,18 @@ impl System {
     /// # Errors
     /// The first problem found, naming the object and field.
     pub fn validate(&self) -> Result<(), ModelError> {
-        // `add_param` rejects non-finite values, but `set_value` and `params_mut` can still
+        self.validate_values()?;
+        crate::par::first_error(self.entities(), |e| self.validate_entity(e.h))?;
+        crate::par::first_error(self.constraints(), |c| self.validate_constraint(c))
+    }
+
+    /// The part of [`System::validate`] that value edits can break: every parameter value and
+    /// constraint dimension is a finite number.
+    ///
+    /// # Errors
+    /// The first non-finite value, naming its object.
+    pub fn validate_values(&self) -> Result<(), ModelError> {
+        // `add_param` rejects non-finite values, but `set_value` and `values_mut` can still
         // store one, and a NaN would silently poison every equation that reads it.
         for p in self.params() {
             if !p.val.is_finite() {
@@ -24,8 +35,16 @@ impl System {
                 });
             }
         }
-        crate::par::first_error(self.entities(), |e| self.validate_entity(e.h))?;
-        crate::par::first_error(self.constraints(), |c| self.validate_constraint(c))
+        for c in self.constraints() {
+            if !c.val.is_finite() {
+                return Err(ModelError::NonFinite {
+                    owner: ObjectId::Constraint(c.h),
+                    field: "val",
+                    value: c.val,
+                });
+            }
+        }
+        Ok(())
     }
 
     fn entity_of(

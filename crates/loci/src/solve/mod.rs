@@ -49,6 +49,7 @@ pub fn solve(
 ) -> Result<Report, SolveError> {
     cfg.check()?;
     sys.validate()?;
+    check_group(sys, group)?;
     let mut cache = Cache::default();
     let report = solve_cached(sys, group, dragged, cfg, &mut cache);
     par::discard(std::mem::take(&mut cache.components));
@@ -66,7 +67,21 @@ pub(crate) fn solve_core(
 ) -> Result<(Report, Vec<f64>), SolveError> {
     cfg.check()?;
     sys.validate()?;
+    check_group(sys, group)?;
     solve_values(sys, group, dragged, cfg, &mut Cache::default())
+}
+
+/// A solve of a group that nothing belongs to is a mistake (a wrong number, an empty file),
+/// not a sketch with nothing to do: say so, with the groups there are.
+pub(crate) fn check_group(sys: &System, group: GroupId) -> Result<(), SolveError> {
+    let groups = sys.groups();
+    if groups.binary_search(&group).is_ok() {
+        return Ok(());
+    }
+    Err(SolveError::UnknownGroup {
+        group,
+        existing: groups,
+    })
 }
 
 /// What a [`Solver`] keeps between solves of a system whose structure has not changed: the
@@ -74,8 +89,8 @@ pub(crate) fn solve_core(
 /// factorisation.
 #[derive(Default)]
 struct Cache {
-    /// Counts of params, entities and constraints when the cache was built.
-    shape: Option<(usize, usize, usize)>,
+    /// The system and structural revision the cache was built for.
+    key: Option<(u64, u64)>,
     links: Vec<Link>,
     kernels: Vec<crate::equations::Kernel>,
     /// Merged and fixed parameters, columns and components.
@@ -89,11 +104,12 @@ struct Cache {
 /// components and analyses each component's sparsity; later solves of the same system (after
 /// the user drags a point, moves a fixed point or edits a dimension) reuse all of it.
 ///
-/// Values may change freely between solves: parameter values, constraint values (`val`). After
-/// adding or removing objects or changing what references what, call [`Solver::invalidate`]
-/// (a change in the number of params, entities or constraints is detected). Branches chosen from
-/// the starting configuration (the sign of a 2D angle, `where_dragged` targets of points that are
-/// not in their constraint's workplane) are kept from the first solve.
+/// Values may change freely between solves: parameter values, constraint values (`val`). Any
+/// structural edit (adding or removing objects, changing a constraint's kind, references,
+/// workplane, group or flags, a parameter's group) advances [`System::revision`], and the next
+/// solve rebuilds the structure; so does solving another system, a clone included. Branches
+/// chosen from the starting configuration (the sign of a 2D angle, `where_dragged` targets of
+/// points that are not in their constraint's workplane) are kept from the first solve.
 pub struct Solver {
     group: GroupId,
     dragged: Vec<ParamId>,
@@ -123,15 +139,14 @@ impl Solver {
     /// # Errors
     /// As [`solve`].
     pub fn solve(&mut self, sys: &mut System) -> Result<Report, SolveError> {
-        let shape = (
-            sys.params().len(),
-            sys.entities().len(),
-            sys.constraints().len(),
-        );
-        if self.cache.shape != Some(shape) {
+        if self.cache.key != Some(sys.structure_key()) {
             self.cfg.check()?;
             sys.validate()?;
+            check_group(sys, self.group)?;
             self.cache = Cache::default();
+        } else {
+            // Values may have changed since: they must still be numbers.
+            sys.validate_values()?;
         }
         solve_cached(sys, self.group, &self.dragged, &self.cfg, &mut self.cache)
     }
@@ -162,11 +177,7 @@ fn solve_cached(
     // Values are written back only when every constraint holds, as libslvs does: a failed
     // solve leaves the caller's parameters as they were.
     if report.outcome.is_ok() {
-        for (p, &v) in sys.params_mut().zip(&values) {
-            if p.group == group {
-                p.val = v;
-            }
-        }
+        sys.write_group_values(group, &values);
     }
     Ok(report)
 }
@@ -182,13 +193,13 @@ fn solve_values(
     let params = sys.params();
     let np = params.len();
     let mut values: Vec<f64> = params.iter().map(|p| p.val).collect();
-    let shape = (np, sys.entities().len(), sys.constraints().len());
-    if cache.shape != Some(shape) {
+    let key = sys.structure_key();
+    if cache.key != Some(key) {
         *cache = Cache::default();
         let compiled = compile_group(sys, group, &values)?;
         cache.kernels = compiled.kernels;
         cache.links = compiled.links;
-        cache.shape = Some(shape);
+        cache.key = Some(key);
     } else {
         refresh(sys, &values, cache);
     }

@@ -76,6 +76,13 @@ const STALL: f64 = 1e-6;
 /// rank test.
 const TINY_STEP: f64 = 1e-6;
 
+/// How many times one solve may move the unknowns of an equation that has no gradient where
+/// it does not hold (see [`Component::nudge_singular`]).
+const MAX_NUDGES: usize = 3;
+
+/// The size of such a move, relative to the equation's residual.
+const NUDGE: f64 = 1e-3;
+
 /// A component ready to solve repeatedly.
 pub(crate) struct Component {
     pub blocks: Vec<Block>,
@@ -382,6 +389,40 @@ impl Component {
         }
     }
 
+    /// Moves the unknowns of every equation whose gradient vanishes where it does not hold, by
+    /// a small deterministic amount in a generic direction; true if anything moved.
+    ///
+    /// Such an equation is at a singular point of its own, not dependent on others: a distance
+    /// between two points that start (or were merged) on top of each other, a line of zero
+    /// length. Its row of the Jacobian is empty, so the rank test would call it a conflict and
+    /// Newton could not move it. A user who swaps a horizontal constraint for a vertical one on
+    /// a line with a fixed start and a length gets exactly this: substitution puts the end on
+    /// the start.
+    fn nudge_singular(
+        &self,
+        x: &mut [f64],
+        r: &[f64],
+        inv: &[f64],
+        tol: f64,
+        attempt: usize,
+    ) -> bool {
+        let mut moved = false;
+        for (i, (&ri, &iv)) in r.iter().zip(inv).enumerate() {
+            if iv != 0.0 || ri.abs() <= tol || !ri.is_finite() {
+                continue;
+            }
+            let b = &self.blocks[self.row_block[i].0 as usize];
+            let cols = &self.block_cols[b.cols0 as usize..(b.cols0 + b.ncols) as usize];
+            let size = NUDGE * ri.abs().max(1.0);
+            for &c in cols {
+                let c = c as usize;
+                x[c] += size * self.scale[c] * generic(c, attempt);
+                moved = true;
+            }
+        }
+        moved
+    }
+
     /// Solves from `x` in place.
     pub fn solve(
         &mut self,
@@ -453,8 +494,13 @@ impl Component {
         let mut history: Vec<f64> = Vec::new();
         // Iterations since the merit last reached a new low.
         let (mut best, mut since_best) = (f64::INFINITY, 0usize);
+        let mut nudges = 0;
         loop {
             self.jacobian(kernels, x, r, jn, inv, xs, jl);
+            if nudges < MAX_NUDGES && self.nudge_singular(x, r, inv, cfg.tolerance, nudges) {
+                nudges += 1;
+                continue;
+            }
             let Some(gram) = gram_slot.as_mut() else {
                 break;
             };
@@ -602,6 +648,23 @@ impl Component {
             fin.dropped = (0..m).collect();
         }
         fin
+    }
+}
+
+/// A number in [-1, -0.5] or [0.5, 1] that depends only on `c` and `attempt`: directions of
+/// nudges that are reproducible and that no constraint is likely to be singular along.
+fn generic(c: usize, attempt: usize) -> f64 {
+    let mut z = (c as u64)
+        .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+        .wrapping_add((attempt as u64 + 1).wrapping_mul(0xBF58_476D_1CE4_E5B9));
+    z = (z ^ (z >> 31)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^= z >> 29;
+    let u = (z >> 11) as f64 / (1u64 << 53) as f64;
+    let m = 0.5 + 0.5 * u;
+    if z & 1 == 0 {
+        m
+    } else {
+        -m
     }
 }
 

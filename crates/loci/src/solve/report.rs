@@ -68,3 +68,21 @@ pub struct Report {
     /// Number of independent components solved.
     pub components: usize,
 }
+
+impl Report {
+    /// The report of a group with nothing in it: okay, no unknowns, no equations.
+    #[must_use]
+    pub fn empty() -> Self {
+        Self {
+            outcome: Outcome::Okay,
+            dof: 0,
+            failed: Vec::new(),
+            failed_entities: Vec::new(),
+            iterations: 0,
+            residual: 0.0,
+            unknowns: 0,
+            equations: 0,
+            components: 0,
+        }
+    }
+}

@@ -17,6 +17,7 @@ mod fixture;
 mod lines;
 mod orientation;
 mod points;
+mod spurious;
 
 use std::collections::{BTreeMap, BTreeSet};
 

@@ -225,6 +225,10 @@ fn recover_group(
     expected: &crate::Report,
     rng: &mut Rng,
 ) -> (f64, Option<String>) {
+    if !file.system.groups().contains(&g) {
+        // Nothing in it to perturb or solve.
+        return (0.0, None);
+    }
     let cfg = Config::default();
     let mut start: Vec<f64> = ps
         .iter()

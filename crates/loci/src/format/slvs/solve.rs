@@ -79,6 +79,11 @@ pub fn solve_all(file: &mut SlvsFile, cfg: &Config) -> Vec<GroupSolve> {
             result: match &g.status {
                 GroupStatus::References => GroupResult::References,
                 GroupStatus::Unsupported(why) => GroupResult::Unsupported(why.clone()),
+                // A group the file declares but that owns nothing (a sketch with no entities
+                // yet) is solved trivially, as in SolveSpace.
+                GroupStatus::Solve if !file.system.groups().contains(&g.h) => {
+                    GroupResult::Solved(Report::empty())
+                }
                 GroupStatus::Solve => match solve(&mut file.system, g.h, &[], cfg) {
                     Ok(r) => GroupResult::Solved(r),
                     Err(e) => GroupResult::Error(e),
