@@ -63,7 +63,21 @@ pub fn solve_arrays(
     // Always look for the failing constraints: libslvs names conflicting ones even when
     // calculateFaileds is 0, and only leaves out the redundant ones then.
     let cfg = Config::default();
-    let report = loci::solve(&mut sys, hg.into(), &dragged, &cfg).map_err(|e| match e {
+    let report = match loci::solve(&mut sys, hg.into(), &dragged, &cfg) {
+        // libslvs answers okay, DOF 0, for a group with nothing in it, and programs written
+        // for it rely on that; loci does the same, and says why in Loci_Slvs_LastError.
+        Err(e @ loci::SolveError::UnknownGroup { .. }) => {
+            last_error::set(format!("warning: {e}"));
+            return Ok(Answer {
+                result: SLVS_RESULT_OKAY,
+                dof: 0,
+                failed: Vec::new(),
+                values: Some(Vec::new()),
+            });
+        }
+        other => other,
+    };
+    let report = report.map_err(|e| match e {
         loci::SolveError::Model(m) => InputError::Model(m),
         // The model was validated and unknown dragged handles dropped above, and the default
         // options are in range, so this is not expected; keep loci's message if it happens.

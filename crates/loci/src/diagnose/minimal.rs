@@ -1,5 +1,6 @@
 //! Checking a candidate conflict on its own: Newton on just its equations, from where the
-//! solve stopped, and a deletion filter that removes every member the conflict does not need.
+//! solve stopped and from the user's drawing, and a deletion filter that removes every member
+//! the conflict does not need.
 
 use super::report::Member;
 use super::unmerged::{Equations, CONSTANT};
@@ -8,9 +9,25 @@ use crate::solve::newton::{Component, Scratch};
 use crate::solve::Config;
 use std::collections::HashMap;
 
-/// Whether the equations of `kernels` can all hold: Newton on them alone, starting at
-/// `values`, converges.
-pub(crate) fn consistent(eqs: &Equations, kernels: &[usize], values: &[f64], cfg: &Config) -> bool {
+/// Whether the equations of `kernels` can all hold: Newton on them alone converges from one
+/// of `starts` (each a value for every parameter: where the solve stopped, the drawing), or
+/// from a generic point near one.
+///
+/// A set that solves from any of them is not a conflict, however the full solve ended: a
+/// solve that stalls far from the drawing can see dependent rows with residuals left at its
+/// stopping point that say nothing about the constraints themselves.
+pub(crate) fn consistent(
+    eqs: &Equations,
+    kernels: &[usize],
+    starts: &[&[f64]],
+    cfg: &Config,
+) -> bool {
+    starts
+        .iter()
+        .any(|values| consistent_from(eqs, kernels, values, cfg))
+}
+
+fn consistent_from(eqs: &Equations, kernels: &[usize], values: &[f64], cfg: &Config) -> bool {
     let mut local: HashMap<u32, u32> = HashMap::new();
     let mut globals = Vec::new();
     for &k in kernels {
@@ -67,6 +84,13 @@ pub(crate) fn consistent(eqs: &Equations, kernels: &[usize], values: &[f64], cfg
     false
 }
 
+/// Whether `set` fails as a whole, without shrinking it: one check, for sets too large for the
+/// deletion filter's one solve per member.
+pub(crate) fn fails(eqs: &Equations, set: &[Member], starts: &[&[f64]], cfg: &Config) -> bool {
+    let kernels: Option<Vec<usize>> = set.iter().map(|&m| eqs.kernel_of(m)).collect();
+    kernels.is_some_and(|k| !consistent(eqs, &k, starts, cfg))
+}
+
 /// Shrinks `set` to a minimal conflict by the deletion filter: a member whose removal leaves
 /// the rest still failing is not needed. Implicit conditions of entities, which a user
 /// cannot remove, are tried first, then constraints from the oldest, so that the most recent
@@ -77,7 +101,7 @@ pub(crate) fn consistent(eqs: &Equations, kernels: &[usize], values: &[f64], cfg
 pub(crate) fn minimise(
     eqs: &Equations,
     set: &[Member],
-    values: &[f64],
+    starts: &[&[f64]],
     cfg: &Config,
 ) -> (Vec<Member>, bool) {
     let mut keep: Vec<(Member, usize)> = set
@@ -85,7 +109,7 @@ pub(crate) fn minimise(
         .filter_map(|&m| eqs.kernel_of(m).map(|k| (m, k)))
         .collect();
     let all: Vec<usize> = keep.iter().map(|x| x.1).collect();
-    if keep.len() != set.len() || consistent(eqs, &all, values, cfg) {
+    if keep.len() != set.len() || consistent(eqs, &all, starts, cfg) {
         let mut out = set.to_vec();
         out.sort_by(Member::report_order);
         return (out, false);
@@ -100,7 +124,7 @@ pub(crate) fn minimise(
             break;
         }
         let rest: Vec<usize> = keep.iter().filter(|x| x.0 != m).map(|x| x.1).collect();
-        if !consistent(eqs, &rest, values, cfg) {
+        if !consistent(eqs, &rest, starts, cfg) {
             keep.retain(|x| x.0 != m);
         }
     }

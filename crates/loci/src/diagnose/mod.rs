@@ -71,11 +71,11 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
         Some(r) => circuits::circuits(&eqs, &lin, r, cfg),
         None => Vec::new(),
     };
-    let mut conflicting = conflict_sets(
+    let conflicting = conflict_sets(
         &eqs,
         &lin,
         &circuits,
-        &values,
+        &[&values, &start],
         report.outcome,
         cfg,
         usize::MAX,
@@ -88,26 +88,22 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
     if outcome == Outcome::Okay && !redundant.is_empty() {
         outcome = Outcome::RedundantOkay;
     }
+    // A conflict is only reported once a set of constraints is shown to fail on its own;
+    // without one, the solve did not converge, whatever the rank test said where it stopped.
+    if outcome == Outcome::Inconsistent && conflicting.is_empty() {
+        outcome = Outcome::DidNotConverge;
+    }
     // The numbers here and the solver's can disagree at the edge of the rank tolerance; the
-    // solver's own lists then stand in, so that a verdict never comes without names.
-    if (outcome == Outcome::Inconsistent && conflicting.is_empty())
-        || (outcome == Outcome::RedundantOkay && redundant.is_empty())
-    {
+    // solver's own list then stands in, so that a redundancy never comes without names.
+    if outcome == Outcome::RedundantOkay && redundant.is_empty() {
         let (r, _) = solve_core(sys, group, &[], &cfg.clone().with_find_failed(true))?;
         let members = solver_members(&r);
         if !members.is_empty() {
-            if outcome == Outcome::Inconsistent {
-                conflicting.push(ConflictSet {
-                    members,
-                    verified: false,
-                });
-            } else {
-                redundant.push(RedundantSet {
-                    members,
-                    excess: 1,
-                    involved: Vec::new(),
-                });
-            }
+            redundant.push(RedundantSet {
+                members,
+                excess: 1,
+                involved: Vec::new(),
+            });
         }
     }
     let unsatisfied = if outcome == Outcome::DidNotConverge {
@@ -167,8 +163,11 @@ impl System {
     }
 }
 
-/// Names the conflicts of a failed solve in `report`: the union of the minimal conflict sets
-/// found where it stopped (`values`), replacing the solver's own list when any is found.
+/// Checks and names the conflicts of a solve the rank test called inconsistent: the union of
+/// the conflict sets found where it stopped (`values`), each shown to fail on its own from
+/// there and from the drawing, replaces the solver's list. When no set fails on its own, the
+/// verdict was a guess: the outcome becomes `did_not_converge`, with the constraints left
+/// unsatisfied where the solve stopped.
 pub(crate) fn name_conflicts(
     sys: &System,
     group: GroupId,
@@ -179,6 +178,7 @@ pub(crate) fn name_conflicts(
     links: &[Link],
 ) {
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
+    let starts: [&[f64]; 2] = [values, &start];
     let sets_in = |eqs: &Equations| -> Vec<ConflictSet> {
         let lin = eqs.linearise(values);
         let circuits = match Rank::new(eqs, &lin, cfg) {
@@ -189,7 +189,7 @@ pub(crate) fn name_conflicts(
             eqs,
             &lin,
             &circuits,
-            values,
+            &starts,
             report.outcome,
             cfg,
             cfg.verify_conflicts_up_to,
@@ -210,19 +210,33 @@ pub(crate) fn name_conflicts(
             sets = sets_in(&eqs);
         }
     }
-    if sets.is_empty() {
+    let whole = if sets.is_empty() {
         let Ok(eqs) = Equations::new(sys, group, &start) else {
             return;
         };
         sets = sets_in(&eqs);
-    }
-    if sets.is_empty() {
-        return;
-    }
+        Some(eqs)
+    } else {
+        None
+    };
     report.failed.clear();
     report.failed_entities.clear();
-    for m in sets.iter().flat_map(|s| &s.members) {
-        match *m {
+    let members: Vec<Member> = if sets.is_empty() {
+        report.outcome = Outcome::DidNotConverge;
+        let Some(eqs) = whole else { return };
+        let lin = eqs.linearise(values);
+        (0..eqs.rows)
+            .filter(|&i| !(lin.r[i].abs() <= cfg.tolerance))
+            .map(|i| eqs.member(eqs.row_kernel[i] as usize))
+            .collect()
+    } else {
+        sets.into_iter().flat_map(|s| s.members).collect()
+    };
+    if !cfg.find_failed {
+        return;
+    }
+    for m in members {
+        match m {
             Member::Constraint(c) => report.failed.push(c),
             Member::Entity(e) => report.failed_entities.push(e),
         }
@@ -233,17 +247,22 @@ pub(crate) fn name_conflicts(
     report.failed_entities.dedup();
 }
 
+/// The most constraints a conflict is searched among, one solve per member, when no
+/// dependence found where the solve stopped fails on its own.
+const WHOLE_SEARCH_LIMIT: usize = 64;
+
 /// Minimal conflict sets from the conflicting circuits; for a solve that stopped at a
-/// least-squares minimum with no dependent row, from the rows with residuals left. Circuits of
-/// more than `verify_up_to` members are taken as they are, unverified.
+/// least-squares minimum with no dependent row, from the rows with residuals left. Each is
+/// reported only once it fails on its own from one of `starts` (where the solve stopped, the
+/// drawing); those of up to `minimise_up_to` members are also shrunk to minimal sets.
 fn conflict_sets(
     eqs: &Equations,
     lin: &Linear,
     circuits: &[Circuit],
-    values: &[f64],
+    starts: &[&[f64]],
     outcome: Outcome,
     cfg: &Config,
-    verify_up_to: usize,
+    minimise_up_to: usize,
 ) -> Vec<ConflictSet> {
     let members_of = |rows: &mut dyn Iterator<Item = usize>| {
         let mut m: Vec<Member> = rows
@@ -273,14 +292,30 @@ fn conflict_sets(
     let mut out: Vec<ConflictSet> = Vec::new();
     let mut done = HashSet::new();
     for c in candidates {
-        let (members, verified) = if c.len() <= verify_up_to {
-            minimal::minimise(eqs, &c, values, cfg)
+        let (members, verified) = if c.len() <= minimise_up_to {
+            minimal::minimise(eqs, &c, starts, cfg)
         } else {
-            (c, false)
+            let fails = minimal::fails(eqs, &c, starts, cfg);
+            (c, fails)
         };
-        // A set read off a least-squares minimum is only a conflict if it checks out.
-        if (verified || circuits.iter().any(|c| c.conflicting)) && done.insert(members.clone()) {
+        if verified && done.insert(members.clone()) {
             out.push(ConflictSet { members, verified });
+        }
+    }
+    // No candidate holds up, yet the solve stopped at a least-squares point with residuals
+    // left: the dependence may run through constraints that hold there (the ones that pin a
+    // line on which a point cannot be). Shrink the whole set of equations to a minimal set
+    // that fails while each of its parts solves, if it is small enough to try.
+    if out.is_empty()
+        && !outcome.is_ok()
+        && circuits::stationary_with_residual(eqs, lin, cfg)
+    {
+        let all = members_of(&mut (0..eqs.rows));
+        if all.len() <= WHOLE_SEARCH_LIMIT {
+            let (members, verified) = minimal::minimise(eqs, &all, starts, cfg);
+            if verified && members.len() < all.len() {
+                out.push(ConflictSet { members, verified });
+            }
         }
     }
     out.sort_by(|a, b| {

@@ -10,7 +10,8 @@ use super::circuits::Circuit;
 use super::report::{Member, RedundantSet};
 use super::unmerged::{Equations, Linear};
 use faer::Mat;
-use std::collections::HashMap;
+use std::cmp::Ordering;
+use std::collections::{BTreeMap, HashMap};
 
 /// Above this many rows or columns the dense test is skipped.
 const DENSE_LIMIT: usize = 400;
@@ -22,8 +23,9 @@ pub(crate) fn redundant_sets(
     circuits: &[Circuit],
     rank_tolerance: f64,
 ) -> Vec<RedundantSet> {
-    let mut parent: HashMap<usize, usize> = HashMap::new();
-    fn find(p: &mut HashMap<usize, usize>, a: usize) -> usize {
+    // Ordered maps: the sets, and so the report, come out the same on every run.
+    let mut parent: BTreeMap<usize, usize> = BTreeMap::new();
+    fn find(p: &mut BTreeMap<usize, usize>, a: usize) -> usize {
         let mut r = a;
         while let Some(&q) = p.get(&r) {
             if q == r {
@@ -49,7 +51,7 @@ pub(crate) fn redundant_sets(
     }
     // A constraint's rows belong to one set even when they lie on separate circuits (the x
     // and y rows of a cycle of coincident points).
-    let mut first_of_kernel: HashMap<u32, usize> = HashMap::new();
+    let mut first_of_kernel: BTreeMap<u32, usize> = BTreeMap::new();
     let rows: Vec<usize> = parent.keys().copied().collect();
     for r in rows {
         let k = eqs.row_kernel[r];
@@ -66,7 +68,7 @@ pub(crate) fn redundant_sets(
         }
     }
     // root -> (rows, excess)
-    let mut groups: HashMap<usize, (Vec<usize>, usize)> = HashMap::new();
+    let mut groups: BTreeMap<usize, (Vec<usize>, usize)> = BTreeMap::new();
     let rows: Vec<usize> = parent.keys().copied().collect();
     for r in rows {
         let root = find(&mut parent, r);
@@ -82,15 +84,31 @@ pub(crate) fn redundant_sets(
         .into_values()
         .map(|(rows, excess)| group_set(eqs, lin, rows, excess, rank_tolerance))
         .collect();
-    out.sort_by(|a, b| {
-        (a.members.len() + a.involved.len())
-            .cmp(&(b.members.len() + b.involved.len()))
-            .then_with(|| match (a.members.first(), b.members.first()) {
-                (Some(x), Some(y)) => Member::report_order(x, y),
-                _ => std::cmp::Ordering::Equal,
-            })
-    });
+    out.sort_by(report_order);
     out
+}
+
+/// Smallest sets first; among sets of one size, by their members in report order, then by
+/// the constraints involved. A total order (a set with no removable member is compared by
+/// its lists like any other), as sorting requires.
+fn report_order(a: &RedundantSet, b: &RedundantSet) -> Ordering {
+    let size = |s: &RedundantSet| s.members.len() + s.involved.len();
+    size(a)
+        .cmp(&size(b))
+        .then_with(|| lists(&a.members, &b.members))
+        .then_with(|| lists(&a.involved, &b.involved))
+        .then_with(|| a.excess.cmp(&b.excess))
+}
+
+/// Lexicographic comparison of two lists in [`Member::report_order`].
+fn lists(a: &[Member], b: &[Member]) -> Ordering {
+    for (x, y) in a.iter().zip(b) {
+        match Member::report_order(x, y) {
+            Ordering::Equal => {}
+            o => return o,
+        }
+    }
+    a.len().cmp(&b.len())
 }
 
 fn group_set(

@@ -160,10 +160,10 @@ fn solve_cached(
     cache: &mut Cache,
 ) -> Result<Report, SolveError> {
     let (mut report, values) = solve_values(sys, group, dragged, cfg, cache)?;
-    if report.outcome == Outcome::Inconsistent && cfg.find_failed {
-        // Name the minimal sets that cannot hold together, found on the unmerged equations
-        // where the solve stopped (those of the constraints it found dependent first); only
-        // failures pay for it.
+    if report.outcome == Outcome::Inconsistent {
+        // Check the verdict and name the sets that cannot hold together, found on the
+        // unmerged equations where the solve stopped (those of the constraints it found
+        // dependent first) and each shown to fail on its own; only failures pay for it.
         crate::diagnose::name_conflicts(
             sys,
             group,
