@@ -71,7 +71,7 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
         Some(r) => circuits::circuits(&eqs, &lin, r, cfg),
         None => Vec::new(),
     };
-    let conflicting = conflict_sets(
+    let mut conflicting = conflict_sets(
         &eqs,
         &lin,
         &circuits,
@@ -81,6 +81,19 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
         usize::MAX,
     );
     let mut redundant = redundant::redundant_sets(&eqs, &lin, &circuits, cfg.rank_tolerance);
+    // Constraints written more than once never reach the equations: each copy is redundant.
+    for (first, copies) in crate::equations::duplicate_groups(sys, group) {
+        let mut members: Vec<Member> = std::iter::once(first)
+            .chain(copies.iter().copied())
+            .map(Member::Constraint)
+            .collect();
+        members.sort_by(Member::report_order);
+        redundant.push(RedundantSet {
+            members,
+            excess: copies.len(),
+            involved: Vec::new(),
+        });
+    }
     let mut outcome = report.outcome;
     if outcome == Outcome::DidNotConverge && !conflicting.is_empty() {
         outcome = Outcome::Inconsistent;
@@ -88,10 +101,26 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
     if outcome == Outcome::Okay && !redundant.is_empty() {
         outcome = Outcome::RedundantOkay;
     }
-    // A conflict is only reported once a set of constraints is shown to fail on its own;
-    // without one, the solve did not converge, whatever the rank test said where it stopped.
+    // A conflict is only reported once a set of constraints is shown to fail on its own. The
+    // search here and the solver's (which starts from the constraints it found dependent) can
+    // find different sets; when this one finds none, the solver's checked verdict stands: its
+    // sets, or did_not_converge when none of them failed on its own either.
     if outcome == Outcome::Inconsistent && conflicting.is_empty() {
-        outcome = Outcome::DidNotConverge;
+        let r = crate::solve::solve(
+            &mut sys.clone(),
+            group,
+            &[],
+            &cfg.clone().with_find_failed(true),
+        )?;
+        let members = solver_members(&r);
+        if r.outcome == Outcome::Inconsistent && !members.is_empty() {
+            conflicting.push(ConflictSet {
+                members,
+                verified: false,
+            });
+        } else {
+            outcome = Outcome::DidNotConverge;
+        }
     }
     // The numbers here and the solver's can disagree at the edge of the rank tolerance; the
     // solver's own list then stands in, so that a redundancy never comes without names.
@@ -306,10 +335,7 @@ fn conflict_sets(
     // left: the dependence may run through constraints that hold there (the ones that pin a
     // line on which a point cannot be). Shrink the whole set of equations to a minimal set
     // that fails while each of its parts solves, if it is small enough to try.
-    if out.is_empty()
-        && !outcome.is_ok()
-        && circuits::stationary_with_residual(eqs, lin, cfg)
-    {
+    if out.is_empty() && !outcome.is_ok() && circuits::stationary_with_residual(eqs, lin, cfg) {
         let all = members_of(&mut (0..eqs.rows));
         if all.len() <= WHOLE_SEARCH_LIMIT {
             let (members, verified) = minimal::minimise(eqs, &all, starts, cfg);

@@ -3,7 +3,9 @@
 use super::refs::{Ent, Frame, Locals, PointRef, Resolver};
 use super::{EqKind, Equation, Owner};
 use crate::error::ModelError;
-use crate::model::{Constraint, ConstraintKind, EntityKind, GroupId, ObjectId, PlaneRule, System};
+use crate::model::{
+    Constraint, ConstraintId, ConstraintKind, EntityKind, GroupId, ObjectId, PlaneRule, System,
+};
 
 /// An equation between parameters, removed from the solve by substitution.
 #[derive(Clone, Copy, Debug)]
@@ -19,6 +21,8 @@ pub(crate) enum Link {
 pub(crate) struct Compiled {
     pub kernels: Vec<Kernel>,
     pub links: Vec<Link>,
+    /// Constraints left out as copies of an earlier one: `(copy, first)`.
+    pub duplicates: Vec<(ConstraintId, ConstraintId)>,
 }
 
 /// General residuals over a few parameters.
@@ -47,11 +51,12 @@ pub(crate) fn compile_group(
     values: &[f64],
 ) -> Result<Compiled, ModelError> {
     let r = Resolver::new(sys);
-    let mine: Vec<&Constraint> = sys
+    let mut mine: Vec<&Constraint> = sys
         .constraints()
         .iter()
         .filter(|c| c.group == group && !c.reference)
         .collect();
+    let duplicates = drop_duplicates(&mut mine);
     // Constraints compile independently; large groups in chunks on all cores, joined in order.
     const CHUNK: usize = 1024;
     let chunks: Vec<&[&Constraint]> = mine.chunks(CHUNK).collect();
@@ -81,7 +86,28 @@ pub(crate) fn compile_group(
     let mut kernels = Vec::new();
     compile_entities(&r, group, values, &mut x, &mut kernels)?;
     out.kernels.append(&mut kernels);
+    out.duplicates = duplicates;
     Ok(out)
+}
+
+/// Removes from `cs` every constraint that repeats an earlier one; returns `(copy, first)`.
+fn drop_duplicates(cs: &mut Vec<&Constraint>) -> Vec<(ConstraintId, ConstraintId)> {
+    let dups = super::duplicates::duplicates(cs);
+    if dups.is_empty() {
+        return Vec::new();
+    }
+    let out: Vec<(ConstraintId, ConstraintId)> = dups.iter().map(|&(i, f)| (cs[i].h, f)).collect();
+    let mut gone = dups.iter().map(|&(i, _)| i).peekable();
+    let mut i = 0;
+    cs.retain(|_| {
+        let drop = gone.peek() == Some(&i);
+        if drop {
+            gone.next();
+        }
+        i += 1;
+        !drop
+    });
+    out
 }
 
 /// The implicit equations of the entities of `group` (unit quaternions, equal arc radii).
@@ -213,10 +239,16 @@ pub(crate) fn compile_unmerged_only(
     let r = Resolver::new(sys);
     let mut out = Vec::new();
     let mut x = Vec::new();
-    for c in sys.constraints() {
-        if c.group != group || c.reference != references || !keep(Owner::Constraint(c.h)) {
-            continue;
-        }
+    let mut mine: Vec<&Constraint> = sys
+        .constraints()
+        .iter()
+        .filter(|c| c.group == group && c.reference == references && keep(Owner::Constraint(c.h)))
+        .collect();
+    if !references {
+        // Copies are reported as redundant apart (see `duplicates`).
+        drop_duplicates(&mut mine);
+    }
+    for c in mine {
         let (eq, l) = resolve_constraint(&r, c)?;
         out.push(kernel(Owner::Constraint(c.h), l, eq, values, &mut x));
     }

@@ -10,6 +10,7 @@ mod circles;
 mod compile;
 mod curves;
 mod direct;
+mod duplicates;
 mod fast;
 mod lines;
 mod orientation;
@@ -18,6 +19,7 @@ mod points;
 pub(crate) mod refs;
 
 pub(crate) use compile::{compile_group, compile_unmerged, compile_unmerged_only, Kernel, Link};
+pub(crate) use duplicates::{duplicate_groups, still_duplicates};
 use refs::{Ent, Frame, Geo, PointRef};
 
 use crate::geom::{Dual, Scalar};

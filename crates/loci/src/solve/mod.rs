@@ -24,9 +24,9 @@ mod substitute;
 pub use config::Config;
 pub use report::{Outcome, Report};
 
-use crate::equations::{compile_group, Link, Owner};
+use crate::equations::{compile_group, still_duplicates, Link, Owner};
 use crate::error::SolveError;
-use crate::model::{GroupId, ParamId, System};
+use crate::model::{ConstraintId, GroupId, ParamId, System};
 use crate::par;
 use newton::Component;
 use plan::{substitute, Plan};
@@ -93,6 +93,8 @@ struct Cache {
     key: Option<(u64, u64)>,
     links: Vec<Link>,
     kernels: Vec<crate::equations::Kernel>,
+    /// Constraints left out as copies of others: `(copy, first)`.
+    duplicates: Vec<(ConstraintId, ConstraintId)>,
     /// Merged and fixed parameters, columns and components.
     plan: Option<Plan>,
     components: Vec<Component>,
@@ -194,11 +196,16 @@ fn solve_values(
     let np = params.len();
     let mut values: Vec<f64> = params.iter().map(|p| p.val).collect();
     let key = sys.structure_key();
+    if cache.key == Some(key) && !still_duplicates(sys, &cache.duplicates) {
+        // A value edit made copies of a constraint different equations again.
+        cache.key = None;
+    }
     if cache.key != Some(key) {
         *cache = Cache::default();
         let compiled = compile_group(sys, group, &values)?;
         cache.kernels = compiled.kernels;
         cache.links = compiled.links;
+        cache.duplicates = compiled.duplicates;
         cache.key = Some(key);
     } else {
         refresh(sys, &values, cache);
@@ -370,6 +377,10 @@ fn solve_values(
     }
     for s in &sub.redundant {
         redundant.extend(s);
+    }
+    for &(copy, first) in &cache.duplicates {
+        redundant.push(Owner::Constraint(copy));
+        redundant.push(Owner::Constraint(first));
     }
     for s in &sub.conflicts {
         conflicting.extend(s);

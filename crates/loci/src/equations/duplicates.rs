@@ -1,0 +1,102 @@
+//! Constraints written more than once: the same kind on the same references with the same
+//! value and flags, under another handle.
+//!
+//! Every copy is the same equation, so all but the first are redundant, whatever the rest of
+//! the sketch says; and every copy shares the first one's unknowns, so n copies would make an
+//! n × n block of `J Jᵀ` (10,000 copies of one distance asked for 800 MB). They are set aside
+//! before the equations are built and reported as redundant with the first.
+
+use crate::model::{Constraint, ConstraintId, ConstraintKind, EntityId};
+use rustc_hash::FxHashMap;
+
+/// What makes two constraints the same equation: all but the handle and group (both are of
+/// the group being compiled). Points of kinds symmetric in their two points, and lines of
+/// kinds symmetric in their two lines, are put in order.
+#[derive(PartialEq, Eq, Hash)]
+struct Key {
+    kind: ConstraintKind,
+    workplane: Option<EntityId>,
+    pts: [Option<EntityId>; 2],
+    ents: [Option<EntityId>; 4],
+    val: u64,
+    other: bool,
+    other2: bool,
+}
+
+impl Key {
+    fn of(c: &Constraint) -> Self {
+        use ConstraintKind as K;
+        let mut pts = [c.pt_a, c.pt_b];
+        let mut ents = [c.entity_a, c.entity_b, c.entity_c, c.entity_d];
+        match c.kind {
+            K::PtPtDistance | K::PointsCoincident => pts.sort_unstable(),
+            K::EqualLengthLines | K::EqualRadius | K::Parallel | K::Perpendicular => {
+                ents[..2].sort_unstable();
+            }
+            _ => {}
+        }
+        Self {
+            kind: c.kind,
+            workplane: c.workplane,
+            pts,
+            ents,
+            // -0.0 and 0.0 are the same value.
+            val: (c.val + 0.0).to_bits(),
+            other: c.other,
+            other2: c.other2,
+        }
+    }
+}
+
+/// Each constraint of `cs` that repeats an earlier one, with the earlier one:
+/// `(position of the copy, handle of the first)`, in order.
+pub(crate) fn duplicates(cs: &[&Constraint]) -> Vec<(usize, ConstraintId)> {
+    let mut first: FxHashMap<Key, ConstraintId> = FxHashMap::default();
+    let mut out = Vec::new();
+    for (i, c) in cs.iter().enumerate() {
+        match first.entry(Key::of(c)) {
+            std::collections::hash_map::Entry::Occupied(e) => out.push((i, *e.get())),
+            std::collections::hash_map::Entry::Vacant(e) => {
+                e.insert(c.h);
+            }
+        }
+    }
+    out
+}
+
+/// Whether the copies recorded in `dups` are still copies in `sys`: a value edit can make two
+/// copies different equations again.
+pub(crate) fn still_duplicates(
+    sys: &crate::model::System,
+    dups: &[(ConstraintId, ConstraintId)],
+) -> bool {
+    dups.iter().all(
+        |&(copy, first)| match (sys.constraint(copy), sys.constraint(first)) {
+            (Some(a), Some(b)) => Key::of(a) == Key::of(b),
+            _ => false,
+        },
+    )
+}
+
+/// The constraints of `group` (not reference ones) written more than once: each first one
+/// with its copies, in the order of the system.
+pub(crate) fn duplicate_groups(
+    sys: &crate::model::System,
+    group: crate::model::GroupId,
+) -> Vec<(ConstraintId, Vec<ConstraintId>)> {
+    let mine: Vec<&Constraint> = sys
+        .constraints()
+        .iter()
+        .filter(|c| c.group == group && !c.reference)
+        .collect();
+    let mut out: Vec<(ConstraintId, Vec<ConstraintId>)> = Vec::new();
+    let mut slot: FxHashMap<ConstraintId, usize> = FxHashMap::default();
+    for (i, first) in duplicates(&mine) {
+        let at = *slot.entry(first).or_insert_with(|| {
+            out.push((first, Vec::new()));
+            out.len() - 1
+        });
+        out[at].1.push(mine[i].h);
+    }
+    out
+}
