@@ -7,7 +7,10 @@ pub struct Config {
     /// A constraint holds when every residual is at most this (in model units: millimetres
     /// for lengths; radians-like for angle rows). Default `1e-10`.
     pub tolerance: f64,
-    /// Newton iterations per component before giving up. Default `50`.
+    /// Newton iterations per component before giving up. Default `1000`: a solve that makes
+    /// progress towards a solution is not cut short (a sketch near a singular configuration
+    /// can creep for hundreds of damped steps), while one that stops making progress ends
+    /// long before.
     pub max_iterations: usize,
     /// Relative size of a dragged parameter's steps: the step minimises
     /// `sum (dx_i / s_i)^2` with `s_i` this value for dragged parameters and 1 for the rest,
@@ -32,7 +35,7 @@ impl Default for Config {
     fn default() -> Self {
         Self {
             tolerance: 1e-10,
-            max_iterations: 50,
+            max_iterations: 1000,
             dragged_scale: 0.05,
             rank_tolerance: 1e-10,
             find_failed: true,
