@@ -339,7 +339,9 @@ fn conflict_sets(
         let all = members_of(&mut (0..eqs.rows));
         if all.len() <= WHOLE_SEARCH_LIMIT {
             let (members, verified) = minimal::minimise(eqs, &all, starts, cfg);
-            if verified && members.len() < all.len() {
+            // Every member is needed (the set less any one of them solves): evidence even when
+            // the set is all there is.
+            if verified {
                 out.push(ConflictSet { members, verified });
             }
         }
