@@ -20,7 +20,7 @@ mod report;
 mod slvs;
 
 use clap::{Parser, Subcommand};
-use loci::format::json::{Problem, SolveResult};
+use loci::format::json::{JsonError, Problem, SolveResult};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -129,7 +129,10 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             }
             let before = problem.system.clone();
             let rep = loci::solve(&mut problem.system, req.group, &req.dragged, &req.config())
-                .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+                .map_err(|e| {
+                    let e = JsonError::from_solve(&text, &problem.system, &e);
+                    anyhow::anyhow!("{}: {e}", file.display())
+                })?;
             if json {
                 outln!(
                     "{}",
@@ -153,6 +156,14 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             }
             Ok(exit_code(rep.outcome))
         }
+        Command::Check { file, .. } if file.extension().is_some_and(|e| e == "slvs") => {
+            anyhow::bail!(
+                "{}: `loci check` reads loci JSON problems; convert the file first with \
+                 `loci convert {} --to json -o FILE.json`, or solve it with `loci solve`",
+                file.display(),
+                file.display()
+            )
+        }
         Command::Check {
             file,
             json,
@@ -167,8 +178,10 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             if let Some(g) = group {
                 req.group = g.into();
             }
-            let d = loci::diagnose(&problem.system, req.group, &req.config())
-                .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+            let d = loci::diagnose(&problem.system, req.group, &req.config()).map_err(|e| {
+                let e = JsonError::from_solve(&text, &problem.system, &e);
+                anyhow::anyhow!("{}: {e}", file.display())
+            })?;
             if json {
                 outln!(
                     "{}",
@@ -183,6 +196,14 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             Ok(check::exit_code(&d))
         }
         Command::Convert { file, to, output } => {
+            let ext = file.extension().and_then(|e| e.to_str()).unwrap_or("");
+            if ext == to {
+                anyhow::bail!(
+                    "{}: the file is already .{to}; `--to {to}` converts from .{}",
+                    file.display(),
+                    if to == "slvs" { "json" } else { "slvs" }
+                );
+            }
             let bytes = if to == "slvs" {
                 slvs::from_json(&file)?
             } else {

@@ -2,8 +2,10 @@
 
 use crate::{code, exit_code};
 use anyhow::Context;
-use loci::format::json::Problem;
-use loci::format::slvs::{solve_all, GroupResult, GroupSolve, SlvsFile};
+use loci::format::json::{JsonError, Problem};
+use loci::format::slvs::{
+    solve_all, solve_message, ExportError, GroupResult, GroupSolve, SlvsFile,
+};
 use loci::{Config, Outcome};
 use std::fmt::Write;
 use std::path::Path;
@@ -29,10 +31,12 @@ pub(crate) fn solve(
         .filter(|r| group.is_none_or(|g| r.group.0 == g))
         .collect();
     if shown.is_empty() {
+        let have: Vec<String> = results.iter().map(|r| r.group.0.to_string()).collect();
         anyhow::bail!(
-            "{}: there is no group {}",
+            "{}: there is no group {}; the file's groups are {}",
             file.display(),
-            group.unwrap_or(0)
+            group.unwrap_or(0),
+            have.join(", ")
         );
     }
     if json {
@@ -59,7 +63,13 @@ pub(crate) fn solve(
     for r in &shown {
         match &r.result {
             GroupResult::Solved(rep) => status = status.max(exit_code(rep.outcome)),
-            GroupResult::Error(e) => anyhow::bail!("{}: group {}: {e}", file.display(), r.group.0),
+            GroupResult::Error(e) => anyhow::bail!(
+                "{}: Group.h.v={:08x} ({}): {}",
+                file.display(),
+                r.group.0,
+                r.name,
+                solve_message(e)
+            ),
             GroupResult::References | GroupResult::Unsupported(_) => {}
         }
     }
@@ -75,7 +85,7 @@ fn group_json(r: &GroupSolve) -> serde_json::Value {
     };
     let reason = match &r.result {
         GroupResult::Unsupported(why) => Some(why.clone()),
-        GroupResult::Error(e) => Some(e.to_string()),
+        GroupResult::Error(e) => Some(solve_message(e)),
         _ => None,
     };
     serde_json::json!({
@@ -156,7 +166,25 @@ pub(crate) fn from_json(file: &Path) -> anyhow::Result<Vec<u8>> {
         std::fs::read_to_string(file).with_context(|| format!("cannot read {}", file.display()))?;
     let problem =
         Problem::from_json(&text).map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
-    let out = loci::format::slvs::export(&problem.system)
-        .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+    let out = loci::format::slvs::export(&problem.system).map_err(|e| {
+        let sys = &problem.system;
+        match &e {
+            ExportError::Model(m) => {
+                let e = JsonError::from_model(&text, sys, m);
+                anyhow::anyhow!("{}: {e}", file.display())
+            }
+            ExportError::Unsupported { entity, why } => {
+                let kind = sys.entity(*entity).map_or("?", |e| e.entity_type().name());
+                let at = loci::format::json::locate(&text, loci::ObjectId::Entity(*entity), "")
+                    .map(|p| format!("{p}: "))
+                    .unwrap_or_default();
+                anyhow::anyhow!(
+                    "{}: {at}{entity} ({kind}): cannot be written as a .slvs file: {why}",
+                    file.display()
+                )
+            }
+            _ => anyhow::anyhow!("{}: {e}", file.display()),
+        }
+    })?;
     Ok(out.bytes)
 }

@@ -229,3 +229,174 @@ fn convert_to_slvs_of_a_bad_problem_exits_3() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(err.contains("bad-convert.json"), "{err}");
 }
+
+/// The error output of a failed run: exit status 3, nothing on standard output, one line
+/// `loci: error: FILE: ...` on standard error that says nothing twice.
+fn bad_input(args: &[&str]) -> String {
+    let o = loci(args);
+    assert_eq!(o.status.code(), Some(3), "{args:?}: {o:?}");
+    assert!(o.stdout.is_empty(), "{args:?}: {o:?}");
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    let line = err
+        .trim_end()
+        .strip_prefix("loci: error: ")
+        .unwrap_or_else(|| panic!("{err}"));
+    // A cause chained after its own text would repeat a long part of the message.
+    let parts: Vec<&str> = line.split(": ").filter(|p| p.len() > 12).collect();
+    for (i, p) in parts.iter().enumerate() {
+        assert!(!parts[i + 1..].contains(p), "said twice: {err}");
+    }
+    line.to_string()
+}
+
+fn data(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../loci/tests/data")
+        .join(name)
+}
+
+#[test]
+fn a_request_handle_from_4000_solves_like_one_below() {
+    let lo = data("request_handle_3fff.slvs");
+    let hi = data("request_handle_4000.slvs");
+    let a = loci(&["solve", lo.to_str().unwrap(), "--json"]);
+    let b = loci(&["solve", hi.to_str().unwrap(), "--json"]);
+    assert_eq!(a.status.code(), Some(0), "{a:?}");
+    assert_eq!(b.status.code(), Some(0), "{b:?}");
+    assert_eq!(a.stdout, b.stdout);
+}
+
+#[test]
+fn slvs_model_errors_are_said_once_in_the_file_s_terms() {
+    // The magic's three high bytes, then text.
+    let bytes = std::fs::read(data("request_handle_4000.slvs")).unwrap();
+    let text = std::str::from_utf8(&bytes[3..]).unwrap();
+    let edited = text.replace("Param.h.v.=40000010", "Param.h.v.=40000090");
+    let line = edited
+        .lines()
+        .position(|l| l == "Entity.h.v=40000000")
+        .unwrap()
+        + 1;
+    let file = [&bytes[..3], edited.as_bytes()].concat();
+    let bad = scratch("missing-param.slvs");
+    std::fs::write(&bad, file).unwrap();
+    let err = bad_input(&["solve", bad.to_str().unwrap()]);
+    assert_eq!(
+        err,
+        format!(
+            "{}: line {line}: Entity.h.v=40000000: its parameter params[0], \
+             Param.h.v.=40000010, is not in the file",
+            bad.display()
+        )
+    );
+    // The same through `convert`.
+    let err = bad_input(&["convert", bad.to_str().unwrap(), "--to", "json"]);
+    assert!(
+        err.ends_with("Param.h.v.=40000010, is not in the file"),
+        "{err}"
+    );
+}
+
+#[test]
+fn json_errors_name_the_object_and_where_it_is() {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/triangle.json"),
+    )
+    .unwrap();
+    // A wrong type: reported at the value, not at the end of the file.
+    let bad = scratch("wrong-type.json");
+    let i = text.match_indices("\"pt_a\": 301").nth(1).unwrap().0;
+    std::fs::write(
+        &bad,
+        format!("{}\"pt_a\": \"abc\"{}", &text[..i], &text[i + 11..]),
+    )
+    .unwrap();
+    for cmd in ["solve", "check"] {
+        assert_eq!(
+            bad_input(&[cmd, bad.to_str().unwrap()]),
+            format!(
+                "{}: line 179 column 12: constraint 3 (pt_pt_distance): field \"pt_a\": \
+                 expected an entity handle (a positive integer), found \"abc\"",
+                bad.display()
+            )
+        );
+    }
+    let err = bad_input(&["convert", bad.to_str().unwrap(), "--to", "slvs"]);
+    assert!(err.contains("line 179 column 12: constraint 3"), "{err}");
+
+    // A dangling reference, found by the solve's check: placed at the reference.
+    let dangling = scratch("dangling-ref.json");
+    std::fs::write(
+        &dangling,
+        text.replacen("\"pt_a\": 301", "\"pt_a\": 399", 1),
+    )
+    .unwrap();
+    let want = format!(
+        "{}: line 165 column 12: constraint 1 (where_dragged): field \"pt_a\": entity 399 does \
+         not exist",
+        dangling.display()
+    );
+    assert_eq!(bad_input(&["solve", dangling.to_str().unwrap()]), want);
+    assert_eq!(bad_input(&["check", dangling.to_str().unwrap()]), want);
+    assert_eq!(
+        bad_input(&["convert", dangling.to_str().unwrap(), "--to", "slvs"]),
+        want
+    );
+}
+
+#[test]
+fn every_bad_input_exits_3_with_one_line() {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/triangle.json"),
+    )
+    .unwrap();
+    let cases = [
+        ("empty.json", String::new()),
+        ("cut.json", text[..text.len() / 2].to_string()),
+        (
+            "numeric-type.json",
+            text.replacen("\"line_segment\"", "3", 1),
+        ),
+        ("dup.json", text.replacen("\"h\": 302,", "\"h\": 301,", 1)),
+        (
+            "unknown-field.json",
+            text.replacen("\"h\": 301,", "\"h\": 301, \"colour\": 2,", 1),
+        ),
+        (
+            "huge.json",
+            text.replacen("\"val\": 0.5", "\"val\": 1e400", 1),
+        ),
+        (
+            "options.json",
+            text.replacen(
+                "\"group\": 2\n }",
+                "\"group\": 2, \"options\": {\"rank_tolerance\": 2}\n }",
+                1,
+            ),
+        ),
+    ];
+    for (name, body) in cases {
+        let p = scratch(name);
+        std::fs::write(&p, body).unwrap();
+        // (`convert` reads no solve options.)
+        let convert = if name == "options.json" { 0 } else { 1 };
+        let cmds: [&[&str]; 3] = [&["solve"], &["check"], &["convert", "--to", "slvs"]];
+        for cmd in &cmds[..2 + convert] {
+            let mut args = vec![cmd[0], p.to_str().unwrap()];
+            args.extend_from_slice(&cmd[1..]);
+            let err = bad_input(&args);
+            assert!(err.starts_with(&format!("{}: ", p.display())), "{err}");
+        }
+    }
+    // `check` reads JSON only, and says what to do with a .slvs file.
+    let slvs = data("request_handle_3fff.slvs");
+    let err = bad_input(&["check", slvs.to_str().unwrap()]);
+    assert!(err.contains("loci convert"), "{err}");
+    // Converting a file to its own format.
+    let err = bad_input(&["convert", slvs.to_str().unwrap(), "--to", "slvs"]);
+    assert!(err.contains("already .slvs"), "{err}");
+    // A missing file.
+    let err = bad_input(&["solve", "no-such-file.slvs"]);
+    assert!(err.starts_with("cannot read no-such-file.slvs"), "{err}");
+}

@@ -8,6 +8,10 @@ use crate::solve::{Config, Outcome, Report};
 use crate::{ConstraintId, EntityId};
 use serde::{Deserialize, Serialize};
 
+mod read;
+
+pub use read::{locate, JsonError, Position};
+
 /// A problem file: the model and a solve request.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Problem {
@@ -82,11 +86,16 @@ impl SolveRequest {
 impl Problem {
     /// Parses a problem.
     ///
+    /// References between objects are not checked here but by every solve (see
+    /// [`System::validate`]); [`JsonError::from_solve`] places such an error in `text`.
+    ///
     /// # Errors
-    /// Malformed JSON, unknown types, or handles that are zero or repeated; the message has
-    /// the line and column.
-    pub fn from_json(text: &str) -> Result<Self, serde_json::Error> {
-        serde_json::from_str(text)
+    /// Malformed JSON; a field missing, of the wrong type or unknown; an unknown type name;
+    /// a handle that is zero or repeated; a number too large for a double. The error names
+    /// the object and field and gives the line and column of the value (or of the object,
+    /// for a missing field).
+    pub fn from_json(text: &str) -> Result<Self, JsonError> {
+        read::problem(text)
     }
 
     /// The solve request, or the default one (the highest group that has constraints).

@@ -38,9 +38,10 @@ use thiserror::Error;
 #[derive(Clone, Debug, Error, PartialEq)]
 #[non_exhaustive]
 pub enum ExportError {
-    /// The model is invalid (a dangling reference, a wrong entity type ...).
+    /// The model is invalid (a dangling reference, a wrong entity type ...). The message
+    /// holds the model error's text, so it is not also given as the source.
     #[error("invalid model: {0}")]
-    Model(#[from] crate::ModelError),
+    Model(crate::ModelError),
     /// More requests than SolveSpace's handles can number (a request's handle is its upper
     /// 16 bits, below the bits that mark generated and constraint parameters).
     #[error("the system needs {needed} requests; a .slvs file holds at most {MAX_REQUESTS}")]
@@ -56,6 +57,12 @@ pub enum ExportError {
         /// Why.
         why: &'static str,
     },
+}
+
+impl From<crate::ModelError> for ExportError {
+    fn from(e: crate::ModelError) -> Self {
+        ExportError::Model(e)
+    }
 }
 
 /// A written file and where each of loci's parameters went.

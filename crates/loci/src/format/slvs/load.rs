@@ -6,8 +6,14 @@
 //! normal at 32; the distance at 64) and parameters `r << 16 | i` (point `n`'s coordinates
 //! at `16 + 3n`, the normal's quaternion at 32..35, the distance at 64). A group `g`
 //! generates entities and parameters `0x8000_0000 | g << 16 | i`. Constraints' own
-//! parameters (`0x4000_0000 | ...`, SolveSpace's helper unknowns for points on lines and
+//! parameters (`c | 0x4000_0000 | i`, SolveSpace's helper unknowns for points on lines and
 //! parallel lines in 3D) are not needed: loci writes those constraints without them.
+//!
+//! Bit 30 alone does not tell a constraint's parameter: the parameters of requests
+//! `0x4000..=0x7fff` have it too. A parameter with bit 30 is a request's when an entity of
+//! the file holds it, as SolveSpace numbers them (see [`own_params`]); otherwise it is a
+//! constraint's. Request and group handles above `0x7fff` would run into the group bit, and
+//! are errors.
 
 use super::codes::{self, ConstraintCode, EntityCode, GroupKind};
 use super::records::{Kind, Record};
@@ -25,6 +31,9 @@ const REFERENCES: u32 = 1;
 
 const GROUP_BIT: u32 = 0x8000_0000;
 const CONSTRAINT_BIT: u32 = 0x4000_0000;
+/// The largest request or group handle: its objects' handles are `h << 16 | i`, which must
+/// stay below [`GROUP_BIT`] (a request's) or fit beside it (a group's).
+const MAX_OWNER: u32 = 0x7fff;
 
 /// Hands out handles no object of the file uses, for the constants loci adds.
 struct Fresh {
@@ -75,6 +84,14 @@ struct Builder<'a> {
     entity_line: HashMap<u32, usize>,
     constraint_line: HashMap<u32, usize>,
     param_lines: Vec<ParamLine>,
+    /// The records of the file's entities and constraints, by handle, to find the line of
+    /// a field at fault.
+    entity_rec: HashMap<u32, &'a Record>,
+    constraint_rec: HashMap<u32, &'a Record>,
+    /// Request handle -> the line of its record.
+    request_line: HashMap<u32, usize>,
+    /// The parameters the file's request entities hold, as SolveSpace numbers them.
+    request_params: HashSet<u32>,
 }
 
 /// Builds the model of a parsed file.
@@ -87,13 +104,18 @@ pub(crate) fn build(
     let mut param_handles = HashSet::new();
     let mut entity_handles = HashSet::new();
     let mut constraint_handles = HashSet::new();
+    let mut request_params = HashSet::new();
     for r in records {
         match r.kind {
             Kind::Param => {
                 param_handles.insert(r.hex("Param.h.v."));
             }
             Kind::Entity => {
-                entity_handles.insert(r.hex("Entity.h.v"));
+                let h = r.hex("Entity.h.v");
+                entity_handles.insert(h);
+                if let Some(kind) = EntityCode::from_code(r.int("Entity.type")) {
+                    request_params.extend(own_params(h, kind));
+                }
             }
             Kind::Constraint => {
                 constraint_handles.insert(r.hex("Constraint.h.v"));
@@ -118,6 +140,10 @@ pub(crate) fn build(
         entity_line: HashMap::new(),
         constraint_line: HashMap::new(),
         param_lines: Vec::new(),
+        entity_rec: HashMap::new(),
+        constraint_rec: HashMap::new(),
+        request_line: HashMap::new(),
+        request_params,
     };
     let mut groups = b.groups()?;
     b.requests()?;
@@ -137,10 +163,10 @@ pub(crate) fn build(
     }
     b.sys.validate().map_err(|e| {
         let line = match e.clone() {
-            crate::ModelError::Dangling { owner, .. }
-            | crate::ModelError::WrongKind { owner, .. }
-            | crate::ModelError::MissingField { owner, .. }
-            | crate::ModelError::NonFinite { owner, .. } => b.line_of(owner),
+            crate::ModelError::Dangling { owner, field, .. }
+            | crate::ModelError::WrongKind { owner, field, .. }
+            | crate::ModelError::MissingField { owner, field, .. }
+            | crate::ModelError::NonFinite { owner, field, .. } => b.field_line(owner, field),
             crate::ModelError::NeedsWorkplane { constraint, .. } => {
                 b.line_of(ObjectId::Constraint(constraint))
             }
@@ -160,7 +186,21 @@ pub(crate) fn build(
     })
 }
 
-impl Builder<'_> {
+impl<'a> Builder<'a> {
+    /// The line of `field` of object `o`: its key's when the record has it, else the
+    /// record's.
+    fn field_line(&self, o: ObjectId, field: &str) -> usize {
+        let rec = match o {
+            ObjectId::Entity(h) => self.entity_rec.get(&h.0),
+            ObjectId::Constraint(h) => self.constraint_rec.get(&h.0),
+            ObjectId::Param(_) => None,
+        };
+        match (rec, super::file_key(o, field)) {
+            (Some(r), Some(key)) => r.line_of(key),
+            _ => self.line_of(o),
+        }
+    }
+
     fn line_of(&self, o: ObjectId) -> usize {
         match o {
             ObjectId::Entity(h) => self.entity_line.get(&h.0).copied().unwrap_or(0),
@@ -187,11 +227,19 @@ impl Builder<'_> {
         let mut out: Vec<SlvsGroup> = Vec::new();
         for r in self.records.iter().filter(|r| r.kind == Kind::Group) {
             let h = Self::handle(r, "Group.h.v")?;
-            if self.groups.contains_key(&h) {
+            if h > MAX_OWNER {
+                return Err(SlvsError::HandleTooLarge {
+                    line: r.line_of("Group.h.v"),
+                    record: "Group",
+                    handle: h,
+                });
+            }
+            if let Some(&i) = self.groups.get(&h) {
                 return Err(SlvsError::Duplicate {
                     line: r.line,
                     record: "Group",
                     handle: h,
+                    first: out[i].line,
                 });
             }
             let kind = GroupKind::from_code(r.int("Group.type"));
@@ -229,23 +277,33 @@ impl Builder<'_> {
     fn requests(&mut self) -> Result<(), SlvsError> {
         for r in self.records.iter().filter(|r| r.kind == Kind::Request) {
             let h = Self::handle(r, "Request.h.v")?;
-            let group = r.hex("Request.group.v");
-            if !self.groups.contains_key(&group) {
-                return Err(SlvsError::Dangling {
-                    line: r.line_of("Request.group.v"),
-                    owner: format!("request {h:08x}"),
-                    field: "group",
-                    target: "group",
-                    handle: group,
-                });
-            }
-            if self.requests.insert(h, group).is_some() {
-                return Err(SlvsError::Duplicate {
-                    line: r.line,
+            if h > MAX_OWNER {
+                return Err(SlvsError::HandleTooLarge {
+                    line: r.line_of("Request.h.v"),
                     record: "Request",
                     handle: h,
                 });
             }
+            if let Some(&first) = self.request_line.get(&h) {
+                return Err(SlvsError::Duplicate {
+                    line: r.line,
+                    record: "Request",
+                    handle: h,
+                    first,
+                });
+            }
+            let group = r.hex("Request.group.v");
+            if !self.groups.contains_key(&group) {
+                return Err(SlvsError::Dangling {
+                    line: r.line_of("Request.group.v"),
+                    owner: super::file_name("Request", h),
+                    field: "Request.group.v",
+                    target: "group",
+                    handle: group,
+                });
+            }
+            self.requests.insert(h, group);
+            self.request_line.insert(h, r.line);
         }
         Ok(())
     }
@@ -274,7 +332,8 @@ impl Builder<'_> {
                 h_line: r.line_of("Param.h.v.") - 1,
                 val_line,
             });
-            if h & GROUP_BIT == 0 && h & CONSTRAINT_BIT != 0 {
+            if h & GROUP_BIT == 0 && h & CONSTRAINT_BIT != 0 && !self.request_params.contains(&h) {
+                // A constraint's helper unknown, which loci does not need.
                 continue;
             }
             let Some(group) = self.owner_group(h) else {
@@ -288,6 +347,7 @@ impl Builder<'_> {
                         line: r.line,
                         record: "Param",
                         handle: h,
+                        first: self.line_of(ObjectId::Param(ParamId(h))),
                     },
                     e => SlvsError::Model {
                         line: r.line,
@@ -335,18 +395,22 @@ impl Builder<'_> {
     fn entities(&mut self) -> Result<(), SlvsError> {
         for r in self.records.iter().filter(|r| r.kind == Kind::Entity) {
             let h = Self::handle(r, "Entity.h.v")?;
-            if self.entity_line.insert(h, r.line).is_some() {
+            if let Some(&first) = self.entity_line.get(&h) {
                 return Err(SlvsError::Duplicate {
                     line: r.line,
                     record: "Entity",
                     handle: h,
+                    first,
                 });
             }
+            self.entity_line.insert(h, r.line);
+            self.entity_rec.insert(h, r);
             let code = r.int("Entity.type");
             let Some(kind) = EntityCode::from_code(code) else {
                 return Err(SlvsError::UnknownType {
                     line: r.line_of("Entity.type"),
                     record: "Entity",
+                    handle: h,
                     code,
                 });
             };
@@ -394,37 +458,27 @@ impl Builder<'_> {
             r.float("Entity.actNormal.vy"),
             r.float("Entity.actNormal.vz"),
         ];
-        let base = h & 0xffff_0000;
-        let k = h & 0xffff;
-        let param = |i: u32| base | i;
+        let p = own_params(h, kind);
         let e = match kind {
-            E::PointIn3d | E::PointIn2d if !generated && k < 32 => {
-                // A datum point is its request's entity 0; other points count from 1.
-                let n = k.saturating_sub(1);
-                let p = |j: u32| param(16 + 3 * n + j);
-                if kind == E::PointIn3d {
-                    Entity::point_3d(h, group, [p(0), p(1), p(2)])
-                } else {
-                    let Some(wp) = wp else {
-                        return Err(SlvsError::MissingField {
-                            line: r.line,
-                            owner: format!("entity {h:08x}"),
-                            field: "Entity.workplane.v",
-                        });
-                    };
-                    Entity::point_2d(h, group, wp, [p(0), p(1)])
-                }
+            E::PointIn3d if p.len() == 3 => Entity::point_3d(h, group, [p[0], p[1], p[2]]),
+            E::PointIn2d if p.len() == 2 => {
+                let Some(wp) = wp else {
+                    return Err(SlvsError::MissingField {
+                        line: r.line,
+                        owner: super::file_name("Entity", h),
+                        field: "Entity.workplane.v",
+                    });
+                };
+                Entity::point_2d(h, group, wp, [p[0], p[1]])
             }
-            E::NormalIn3d if !generated && k == 32 => {
-                Entity::normal_3d(h, group, [param(32), param(33), param(34), param(35)])
-            }
-            E::Distance if !generated && k == 64 => Entity::distance(h, group, wp, param(64)),
+            E::NormalIn3d if p.len() == 4 => Entity::normal_3d(h, group, [p[0], p[1], p[2], p[3]]),
+            E::Distance if p.len() == 1 => Entity::distance(h, group, wp, p[0]),
             E::NormalIn2d => match wp {
                 Some(wp) => Entity::normal_2d(h, group, wp),
                 None => {
                     return Err(SlvsError::MissingField {
                         line: r.line,
-                        owner: format!("entity {h:08x}"),
+                        owner: super::file_name("Entity", h),
                         field: "Entity.workplane.v",
                     })
                 }
@@ -783,7 +837,7 @@ impl Builder<'_> {
                 Some(crate::EntityKind::Workplane { normal, .. }) => *normal,
                 _ => {
                     groups[gi].status = GroupStatus::Unsupported(format!(
-                        "its workplane {wp:08x} is not one loci models"
+                        "its workplane Entity.h.v={wp:08x} is not one loci models"
                     ));
                     continue;
                 }
@@ -824,27 +878,30 @@ impl Builder<'_> {
         self.skipped.insert(h, kind.name());
         self.notes.push(Note {
             line: r.line,
-            message: format!("entity {h:08x} ({}) skipped: {why}", kind.name()),
+            message: format!("Entity.h.v={h:08x} ({}) skipped: {why}", kind.name()),
         });
     }
 
     fn constraints(&mut self, groups: &mut [SlvsGroup]) -> Result<(), SlvsError> {
         for r in self.records.iter().filter(|r| r.kind == Kind::Constraint) {
             let h = Self::handle(r, "Constraint.h.v")?;
-            if self.constraint_line.insert(h, r.line).is_some() {
+            if let Some(&first) = self.constraint_line.get(&h) {
                 return Err(SlvsError::Duplicate {
                     line: r.line,
                     record: "Constraint",
                     handle: h,
+                    first,
                 });
             }
+            self.constraint_line.insert(h, r.line);
+            self.constraint_rec.insert(h, r);
             let code = r.int("Constraint.type");
             let kind = match codes::constraint(code) {
                 Some(ConstraintCode::Kind(k)) => k,
                 Some(ConstraintCode::Comment) => {
                     self.notes.push(Note {
                         line: r.line,
-                        message: format!("constraint {h:08x} is a comment: no equations"),
+                        message: format!("Constraint.h.v={h:08x} is a comment: no equations"),
                     });
                     continue;
                 }
@@ -852,6 +909,7 @@ impl Builder<'_> {
                     return Err(SlvsError::UnknownType {
                         line: r.line_of("Constraint.type"),
                         record: "Constraint",
+                        handle: h,
                         code,
                     })
                 }
@@ -860,8 +918,8 @@ impl Builder<'_> {
             let Some(&gi) = self.groups.get(&g) else {
                 return Err(SlvsError::Dangling {
                     line: r.line_of("Constraint.group.v"),
-                    owner: format!("constraint {h:08x}"),
-                    field: "group",
+                    owner: super::file_name("Constraint", h),
+                    field: "Constraint.group.v",
                     target: "group",
                     handle: g,
                 });
@@ -877,7 +935,7 @@ impl Builder<'_> {
                 if !self.entity_line.contains_key(&e) {
                     return Err(SlvsError::Dangling {
                         line: r.line_of(key),
-                        owner: format!("constraint {h:08x}"),
+                        owner: super::file_name("Constraint", h),
                         field: key,
                         target: "entity",
                         handle: e,
@@ -885,14 +943,14 @@ impl Builder<'_> {
                 }
                 if self.frozen.get(&e) == Some(&g) {
                     unmodelled = Some(format!(
-                        "constraint {h:08x} ({}) refers to entity {e:08x}, which moves with \
+                        "Constraint.h.v={h:08x} ({}) refers to Entity.h.v={e:08x}, which moves with \
                          the group's translation in a way loci does not model",
                         kind.name()
                     ));
                 }
                 if let Some(what) = self.skipped.get(&e) {
                     unmodelled = Some(format!(
-                        "constraint {h:08x} ({}) refers to entity {e:08x} ({what}), which loci \
+                        "Constraint.h.v={h:08x} ({}) refers to Entity.h.v={e:08x} ({what}), which loci \
                          does not model",
                         kind.name()
                     ));
@@ -924,7 +982,7 @@ impl Builder<'_> {
                 reference,
             };
             self.sys.add_constraint(c).map_err(|e| SlvsError::Model {
-                line: r.line,
+                line: r.line_of("Constraint.valA"),
                 source: e,
             })?;
         }
@@ -1075,10 +1133,31 @@ const ENTITY_KEYS: [&str; 7] = [
     "Constraint.entityD.v",
 ];
 
+/// The parameters file entity `h` of type `kind` holds itself, as SolveSpace numbers them
+/// from the handle of a request's entity: point `n` (a datum point is entity 0, other points
+/// count from 1) at `16 + 3n`, the normal's quaternion at 32..35, a distance at 64. Empty
+/// for entities that hold none, and for a group's (copies, which loci models otherwise).
+fn own_params(h: u32, kind: EntityCode) -> Vec<u32> {
+    if h & GROUP_BIT != 0 {
+        return Vec::new();
+    }
+    let base = h & 0xffff_0000;
+    let k = h & 0xffff;
+    let (first, count) = match kind {
+        EntityCode::PointIn3d if k < 32 => (16 + 3 * k.saturating_sub(1), 3),
+        EntityCode::PointIn2d if k < 32 => (16 + 3 * k.saturating_sub(1), 2),
+        EntityCode::NormalIn3d if k == 32 => (32, 4),
+        EntityCode::Distance if k == 64 => (64, 1),
+        _ => return Vec::new(),
+    };
+    (first..first + count).map(|i| base | i).collect()
+}
+
 /// A unit quaternion whose N axis is along `n`, or `None` for a zero vector.
 fn rotation_to(n: [f64; 3]) -> Option<[f64; 4]> {
     let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-    if !(len > 1e-12) {
+    // (A NaN length is no direction either.)
+    if len.is_nan() || len <= 1e-12 {
         return None;
     }
     let n = n.map(|v| v / len);

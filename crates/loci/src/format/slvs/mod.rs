@@ -50,9 +50,9 @@ pub use export::{export, Export, ExportError};
 pub use load::FIXED_GROUP;
 pub use solve::{solve_all, GroupResult, GroupSolve};
 
-use crate::model::{GroupId, ParamId, System};
-use crate::ModelError;
-use thiserror::Error;
+use crate::model::{GroupId, ObjectId, ParamId, System};
+use crate::{ModelError, SolveError};
+use std::fmt;
 
 /// A loaded `.slvs` file: loci's model of it, its groups in solve order, and the original
 /// text for saving.
@@ -121,25 +121,28 @@ pub struct Note {
 }
 
 /// A file loci cannot read, with the line (1-based) where the problem is.
-#[derive(Clone, Debug, Error, PartialEq)]
+///
+/// Messages name objects as the file writes them: `Entity.h.v=00040001`, with the key of the
+/// field at fault (`Constraint.ptB.v=00090000`). The message is complete in itself: a
+/// [`ModelError`] inside [`SlvsError::Model`] is part of the text, not a separate source.
+#[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum SlvsError {
     /// A line that is not text.
-    #[error("line {line}: not UTF-8 text")]
     NotText {
         /// The line.
         line: usize,
     },
     /// A `Key=value` line whose key SolveSpace does not write.
-    #[error("line {line}: unknown key `{key}`")]
     UnknownKey {
         /// The line.
         line: usize,
         /// The key.
         key: String,
+        /// The record it is in, as the file names it, or empty before the record's handle.
+        owner: String,
     },
     /// A line that is neither `Key=value`, an `Add...` line nor part of a saved solid.
-    #[error("line {line}: unrecognised line `{text}`")]
     UnrecognizedLine {
         /// The line.
         line: usize,
@@ -147,7 +150,6 @@ pub enum SlvsError {
         text: String,
     },
     /// A value that does not parse as its key's format.
-    #[error("line {line}: {key}={value}: expected {expected}")]
     BadValue {
         /// The line.
         line: usize,
@@ -157,9 +159,11 @@ pub enum SlvsError {
         value: String,
         /// What the format requires.
         expected: &'static str,
+        /// The record it is in, as the file names it (`Entity.h.v=00040001`), or empty when
+        /// the record's handle is not known yet.
+        owner: String,
     },
     /// A field of one record kind inside a record of another.
-    #[error("line {line}: `{key}` inside a {open} record (a missing Add{open} line?)")]
     MixedRecord {
         /// The line.
         line: usize,
@@ -167,9 +171,10 @@ pub enum SlvsError {
         key: String,
         /// The kind of the record being read.
         open: &'static str,
+        /// The record being read, as the file names it, or empty before its handle.
+        owner: String,
     },
     /// The file ends in the middle of something.
-    #[error("line {line}: file is truncated: {what}")]
     Truncated {
         /// Where the unfinished part starts.
         line: usize,
@@ -177,15 +182,24 @@ pub enum SlvsError {
         what: String,
     },
     /// A record without its handle.
-    #[error("line {line}: {record} record has no handle")]
     MissingHandle {
         /// The record's first line.
         line: usize,
         /// Its kind.
         record: &'static str,
     },
+    /// A handle too large for SolveSpace's numbering: the handles of a request's (or a
+    /// group's) entities and parameters are its own shifted left by 16 bits, below the bit
+    /// that marks a group's.
+    HandleTooLarge {
+        /// The line of the handle.
+        line: usize,
+        /// The record kind.
+        record: &'static str,
+        /// The handle.
+        handle: u32,
+    },
     /// Two records of one kind with the same handle.
-    #[error("line {line}: {record} {handle:08x} is defined twice")]
     Duplicate {
         /// The second definition.
         line: usize,
@@ -193,27 +207,27 @@ pub enum SlvsError {
         record: &'static str,
         /// The handle.
         handle: u32,
+        /// The line of the first definition.
+        first: usize,
     },
     /// A type number loci does not know.
-    #[error("line {line}: unknown {record} type {code}")]
     UnknownType {
         /// The line.
         line: usize,
         /// The record kind.
         record: &'static str,
+        /// The record's handle.
+        handle: u32,
         /// The number.
         code: i64,
     },
     /// A reference to an object that is not in the file.
-    #[error(
-        "line {line}: {owner}: {field} refers to {target} {handle:08x}, which is not in the file"
-    )]
     Dangling {
         /// The line of the reference.
         line: usize,
-        /// The object holding it.
+        /// The object holding it, as the file names it (`Constraint.h.v=00000003`).
         owner: String,
-        /// The field.
+        /// The field's key (`Constraint.ptB.v`).
         field: &'static str,
         /// What kind of object it names.
         target: &'static str,
@@ -221,27 +235,288 @@ pub enum SlvsError {
         handle: u32,
     },
     /// A field an object needs is absent.
-    #[error("line {line}: {owner} has no {field}")]
     MissingField {
         /// The object's line.
         line: usize,
-        /// The object.
+        /// The object, as the file names it (`Entity.h.v=00040001`).
         owner: String,
-        /// The field.
+        /// The field's key.
         field: &'static str,
     },
     /// The model the file describes is invalid (wrong entity types, missing parameters ...).
-    #[error("line {line}: {source}")]
     Model {
-        /// The line of the object at fault.
+        /// The line of the object (or of its field) at fault.
         line: usize,
-        /// What is wrong.
+        /// What is wrong. Its handles are the file's; the message writes them as the file
+        /// does.
         source: ModelError,
     },
     /// The file has no groups (an empty or cut-off file).
-    #[error("the file has no groups: it is empty or not a SolveSpace file")]
     NoGroups,
 }
+
+/// The key of a record kind's handle, e.g. `Entity.h.v` (a parameter's is `Param.h.v.`).
+fn handle_key(record: &str) -> &'static str {
+    match record {
+        "Group" => "Group.h.v",
+        "Param" => "Param.h.v.",
+        "Request" => "Request.h.v",
+        "Entity" => "Entity.h.v",
+        "Constraint" => "Constraint.h.v",
+        _ => "Style.h.v",
+    }
+}
+
+/// An object as the file names it: `Request.h.v=00040000`.
+pub(crate) fn file_name(record: &str, h: u32) -> String {
+    format!("{}={h:08x}", handle_key(record))
+}
+
+/// A model object as the file names it.
+fn object_name(o: ObjectId) -> String {
+    match o {
+        ObjectId::Param(h) => file_name("Param", h.0),
+        ObjectId::Entity(h) => file_name("Entity", h.0),
+        ObjectId::Constraint(h) => file_name("Constraint", h.0),
+    }
+}
+
+/// The file's key for a field loci names `field` (`pt_a` is `Constraint.ptA.v`), or `None`
+/// for fields loci derives (an entity's parameters, a copy's base and motion).
+pub(crate) fn file_key(owner: ObjectId, field: &str) -> Option<&'static str> {
+    Some(match owner {
+        ObjectId::Param(_) => match field {
+            "val" => "Param.val",
+            _ => return None,
+        },
+        ObjectId::Entity(_) => match field {
+            "workplane" => "Entity.workplane.v",
+            "points[0]" | "origin" | "center" => "Entity.point[0].v",
+            "points[1]" | "start" => "Entity.point[1].v",
+            "points[2]" | "end" => "Entity.point[2].v",
+            "points[3]" => "Entity.point[3].v",
+            "normal" => "Entity.normal.v",
+            "radius" => "Entity.distance.v",
+            _ => return None,
+        },
+        ObjectId::Constraint(_) => match field {
+            "workplane" => "Constraint.workplane.v",
+            "pt_a" => "Constraint.ptA.v",
+            "pt_b" => "Constraint.ptB.v",
+            "entity_a" => "Constraint.entityA.v",
+            "entity_b" => "Constraint.entityB.v",
+            "entity_c" => "Constraint.entityC.v",
+            "entity_d" => "Constraint.entityD.v",
+            "val" => "Constraint.valA",
+            _ => return None,
+        },
+    })
+}
+
+fn article(target: &str) -> &'static str {
+    if target.starts_with(['a', 'e', 'i', 'o', 'u']) {
+        "an"
+    } else {
+        "a"
+    }
+}
+
+/// A model error in the file's terms: objects and fields as the file writes them, handles
+/// in hex.
+#[must_use]
+pub fn model_message(e: &ModelError) -> String {
+    // A field as the file writes it with its value, or loci's name for a derived one.
+    let field_is = |owner: ObjectId, field: &str, target: &str, h: u32| match file_key(owner, field)
+    {
+        Some(key) => format!("{key}={h:08x}"),
+        None if target == "param" => format!("its parameter {field}, Param.h.v.={h:08x},"),
+        None => format!("its {field}, Entity.h.v={h:08x},"),
+    };
+    match e {
+        ModelError::ZeroHandle { what, index } => {
+            format!("{what} #{index} has handle 00000000; handles start at 00000001")
+        }
+        ModelError::DuplicateHandle { object } => {
+            format!("{} is defined twice", object_name(*object))
+        }
+        ModelError::Dangling {
+            owner,
+            field,
+            target,
+            handle,
+        } => match file_key(*owner, field) {
+            Some(key) => format!(
+                "{}: {key}={handle:08x} refers to {} {target} that is not in the file",
+                object_name(*owner),
+                article(target)
+            ),
+            None => format!(
+                "{}: {} is not in the file",
+                object_name(*owner),
+                field_is(*owner, field, target, *handle)
+            ),
+        },
+        ModelError::WrongKind {
+            owner,
+            field,
+            entity,
+            found,
+            expected,
+        } => format!(
+            "{}: {} is {} {found}, but {expected} is expected",
+            object_name(*owner),
+            field_is(*owner, field, "entity", entity.0),
+            article(found.name())
+        ),
+        ModelError::MissingField {
+            owner,
+            field,
+            expected,
+        } => format!(
+            "{} has no {}; {expected} is expected",
+            object_name(*owner),
+            file_key(*owner, field).unwrap_or(field)
+        ),
+        ModelError::NonFinite {
+            owner,
+            field,
+            value,
+        } => format!(
+            "{}: {} is {value}, not a finite number",
+            object_name(*owner),
+            file_key(*owner, field).unwrap_or(field)
+        ),
+        ModelError::NeedsWorkplane { constraint, kind } => format!(
+            "{} ({kind}) has no Constraint.workplane.v; it applies only in a workplane",
+            object_name(ObjectId::Constraint(*constraint))
+        ),
+        ModelError::Cycle { entity } => format!(
+            "{}: its references loop back to itself",
+            object_name(ObjectId::Entity(*entity))
+        ),
+        #[allow(unreachable_patterns)]
+        other => other.to_string(),
+    }
+}
+
+/// A solve error in the file's terms (see [`model_message`]).
+#[must_use]
+pub fn solve_message(e: &SolveError) -> String {
+    match e {
+        SolveError::Model(m) => model_message(m),
+        other => other.to_string(),
+    }
+}
+
+impl fmt::Display for SlvsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SlvsError::NotText { line } => write!(f, "line {line}: not UTF-8 text"),
+            SlvsError::UnknownKey { line, key, owner } if owner.is_empty() => {
+                write!(f, "line {line}: unknown key `{key}`")
+            }
+            SlvsError::UnknownKey { line, key, owner } => {
+                write!(f, "line {line}: {owner}: unknown key `{key}`")
+            }
+            SlvsError::UnrecognizedLine { line, text } => {
+                write!(f, "line {line}: unrecognised line `{text}`")
+            }
+            SlvsError::BadValue {
+                line,
+                key,
+                value,
+                expected,
+                owner,
+            } => {
+                write!(f, "line {line}: ")?;
+                if !owner.is_empty() {
+                    write!(f, "{owner}: ")?;
+                }
+                write!(f, "{key}={value}: expected {expected}")
+            }
+            SlvsError::MixedRecord {
+                line,
+                key,
+                open,
+                owner,
+            } => {
+                let record = if owner.is_empty() {
+                    format!("a {open} record")
+                } else {
+                    format!("the {open} record {owner}")
+                };
+                write!(
+                    f,
+                    "line {line}: `{key}` inside {record} (a missing Add{open} line?)"
+                )
+            }
+            SlvsError::Truncated { line, what } => {
+                write!(f, "line {line}: file is truncated: {what}")
+            }
+            SlvsError::MissingHandle { line, record } => write!(
+                f,
+                "line {line}: {record} record has no handle ({})",
+                handle_key(record)
+            ),
+            SlvsError::HandleTooLarge {
+                line,
+                record,
+                handle,
+            } => write!(
+                f,
+                "line {line}: {} is too large: the handles of a {}'s entities and parameters \
+                 are its own shifted left by 16 bits, so it must be at most 00007fff",
+                file_name(record, *handle),
+                record.to_lowercase()
+            ),
+            SlvsError::Duplicate {
+                line,
+                record,
+                handle,
+                first,
+            } => write!(
+                f,
+                "line {line}: {} is defined twice (first at line {first})",
+                file_name(record, *handle)
+            ),
+            SlvsError::UnknownType {
+                line,
+                record,
+                handle,
+                code,
+            } => write!(
+                f,
+                "line {line}: {}: unknown type {record}.type={code}",
+                file_name(record, *handle)
+            ),
+            SlvsError::Dangling {
+                line,
+                owner,
+                field,
+                target,
+                handle,
+            } => write!(
+                f,
+                "line {line}: {owner}: {field}={handle:08x} refers to {} {target} that is not \
+                 in the file",
+                article(target)
+            ),
+            SlvsError::MissingField { line, owner, field } => {
+                write!(f, "line {line}: {owner} has no {field}")
+            }
+            SlvsError::Model { line, source } => {
+                write!(f, "line {line}: {}", model_message(source))
+            }
+            SlvsError::NoGroups => {
+                f.write_str("the file has no groups: it is empty or not a SolveSpace file")
+            }
+        }
+    }
+}
+
+// No `source`: every message already holds the text of what caused it, and a chain printer
+// (`{:#}` in anyhow) would repeat it.
+impl std::error::Error for SlvsError {}
 
 impl SlvsError {
     /// The line the error concerns (1-based), or 0 for the whole file.
@@ -255,6 +530,7 @@ impl SlvsError {
             | SlvsError::MixedRecord { line, .. }
             | SlvsError::Truncated { line, .. }
             | SlvsError::MissingHandle { line, .. }
+            | SlvsError::HandleTooLarge { line, .. }
             | SlvsError::Duplicate { line, .. }
             | SlvsError::UnknownType { line, .. }
             | SlvsError::Dangling { line, .. }

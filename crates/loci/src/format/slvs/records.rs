@@ -321,6 +321,7 @@ pub(crate) fn parse(bytes: &[u8], spans: &[(usize, usize)]) -> Result<Parsed, Sl
                 return Err(SlvsError::UnknownKey {
                     line: line_no,
                     key: key.to_string(),
+                    owner: owner_of(&fields),
                 });
             };
             if let Some(first) = fields.first() {
@@ -330,15 +331,17 @@ pub(crate) fn parse(bytes: &[u8], spans: &[(usize, usize)]) -> Result<Parsed, Sl
                         line: line_no,
                         key: key.to_string(),
                         open: open.name(),
+                        owner: owner_of(&fields),
                     });
                 }
             }
             let value = if fmt == Fmt::Remap {
-                let (v, next) = remap_block(bytes, spans, i, line_no, val)?;
+                let (v, next) = remap_block(bytes, spans, i, line_no, val)
+                    .map_err(|e| with_owner(e, &fields))?;
                 i = next;
                 Value::Remap(v)
             } else {
-                value(fmt, key, val, line_no)?
+                value(fmt, key, val, line_no).map_err(|e| with_owner(e, &fields))?
             };
             fields.push(Field {
                 key,
@@ -353,6 +356,7 @@ pub(crate) fn parse(bytes: &[u8], spans: &[(usize, usize)]) -> Result<Parsed, Sl
                         line: line_no,
                         key: text.to_string(),
                         open: open.name(),
+                        owner: owner_of(&fields),
                     });
                 }
             }
@@ -375,19 +379,42 @@ pub(crate) fn parse(bytes: &[u8], spans: &[(usize, usize)]) -> Result<Parsed, Sl
         }
     }
     if let Some(first) = fields.first() {
+        let kind = record_kind(first.key).name();
+        let owner = owner_of(&fields);
+        let record = if owner.is_empty() {
+            format!("the {kind} record")
+        } else {
+            format!("the {kind} record {owner}")
+        };
         return Err(SlvsError::Truncated {
             line: first.line,
-            what: format!(
-                "the {} record starting here has no Add{} line",
-                record_kind(first.key).name(),
-                record_kind(first.key).name()
-            ),
+            what: format!("{record} starting here has no Add{kind} line"),
         });
     }
     Ok(Parsed {
         records,
         solid_lines,
     })
+}
+
+/// The record being read, as the file names it (`Entity.h.v=00040001`), or empty before its
+/// handle.
+fn owner_of(fields: &[Field]) -> String {
+    fields
+        .iter()
+        .find_map(|f| match (&f.value, f.key.split_once(".h.v")) {
+            (Value::Hex(h), Some((record, _))) => Some(super::file_name(record, *h)),
+            _ => None,
+        })
+        .unwrap_or_default()
+}
+
+/// `e`, naming the record being read when it is a bad value.
+fn with_owner(mut e: SlvsError, fields: &[Field]) -> SlvsError {
+    if let SlvsError::BadValue { owner, .. } = &mut e {
+        *owner = owner_of(fields);
+    }
+    e
 }
 
 fn strip_cr(raw: &[u8]) -> &[u8] {
@@ -407,6 +434,7 @@ fn value(fmt: Fmt, key: &str, val: &str, line: usize) -> Result<Value, SlvsError
         key: key.to_string(),
         value: val.chars().take(40).collect(),
         expected,
+        owner: String::new(),
     };
     Ok(match fmt {
         Fmt::Hex | Fmt::Color => {
@@ -433,6 +461,9 @@ fn value(fmt: Fmt, key: &str, val: &str, line: usize) -> Result<Value, SlvsError
     })
 }
 
+/// A remap block's entries: `(index, source entity, copy number)`.
+type Remap = Vec<(u32, u32, u32)>;
+
 /// Reads a `{ ... }` remap block whose first line is `line`; returns the entries and the
 /// index of the first line after the block.
 fn remap_block(
@@ -441,13 +472,14 @@ fn remap_block(
     mut i: usize,
     line: usize,
     first: &str,
-) -> Result<(Vec<(u32, u32, u32)>, usize), SlvsError> {
+) -> Result<(Remap, usize), SlvsError> {
     if first.trim() != "{" {
         return Err(SlvsError::BadValue {
             line,
             key: "Group.remap".into(),
             value: first.chars().take(40).collect(),
             expected: "`{` followed by remap lines and `}`",
+            owner: String::new(),
         });
     }
     let mut out = Vec::new();
@@ -480,6 +512,7 @@ fn remap_block(
                     key: "Group.remap".into(),
                     value: t.chars().take(40).collect(),
                     expected: "`<index> <hex entity> <copy number>` or `}`",
+                    owner: String::new(),
                 })
             }
         }

@@ -59,7 +59,7 @@ impl fmt::Display for GroupResult {
             GroupResult::Solved(r) => write!(f, "{} (dof {})", r.outcome, r.dof),
             GroupResult::References => f.write_str("reference planes (fixed)"),
             GroupResult::Unsupported(why) => write!(f, "not solved: {why}"),
-            GroupResult::Error(e) => write!(f, "error: {e}"),
+            GroupResult::Error(e) => write!(f, "error: {}", super::solve_message(e)),
         }
     }
 }

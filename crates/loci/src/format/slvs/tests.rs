@@ -383,7 +383,16 @@ fn entity_pointing_at_a_missing_entity() {
     let bad = SKETCH.replace("Entity.normal.v=80020001", "Entity.normal.v=80020009");
     let e = err(&bad);
     assert!(matches!(e, SlvsError::Model { .. }), "{e}");
-    assert_eq!(e.line(), line_of(SKETCH, "Entity.h.v=80020000"));
+    // At the reference itself, named as the file writes it.
+    let line = line_of(&bad, "Entity.normal.v=80020009");
+    assert_eq!(e.line(), line);
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "line {line}: Entity.h.v=80020000: Entity.normal.v=80020009 refers to an entity \
+             that is not in the file"
+        )
+    );
 }
 
 #[test]
