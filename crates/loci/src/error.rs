@@ -98,6 +98,23 @@ pub enum SolveError {
         /// The groups that have objects, in increasing order.
         existing: Vec<GroupId>,
     },
+    /// One block of equations shares unknowns so widely (a point that tens of thousands of
+    /// constraints refer to) that its normal equations would take gigabytes: refused rather
+    /// than allocated.
+    #[error(
+        "{equations} equations on {unknowns} unknowns share unknowns so widely that solving them \
+         would build {products} products (at most {} are built); split the constraints on \
+         the most shared points over several points",
+        crate::solve::MAX_PRODUCTS
+    )]
+    TooLarge {
+        /// Equations of the block.
+        equations: usize,
+        /// Unknowns of the block.
+        unknowns: usize,
+        /// Products of Jacobian entries its normal equations need.
+        products: usize,
+    },
     /// A dragged parameter does not exist.
     #[error("dragged parameter {0} does not exist")]
     UnknownDragged(u32),

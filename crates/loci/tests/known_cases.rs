@@ -175,3 +175,63 @@ fn many_copies_of_one_constraint_cost_linear_time_and_memory() {
     assert_eq!(d.conflicting.len(), 1);
     assert_eq!(d.conflicting[0].members.len(), 2);
 }
+
+/// `n` points of a workplane, each at distance 10 from one centre point.
+fn star(n: u32) -> System {
+    use loci::{Constraint, ConstraintKind as K, Entity, Param};
+    let mut sys = System::new();
+    for (h, v) in [
+        (1, 0.0),
+        (2, 0.0),
+        (3, 0.0),
+        (4, 1.0),
+        (5, 0.0),
+        (6, 0.0),
+        (7, 0.0),
+    ] {
+        sys.add_param(Param::new(h, 1, v)).unwrap();
+    }
+    sys.add_entity(Entity::point_3d(1, 1, [1, 2, 3])).unwrap();
+    sys.add_entity(Entity::normal_3d(2, 1, [4, 5, 6, 7]))
+        .unwrap();
+    sys.add_entity(Entity::workplane(3, 1, 1, 2)).unwrap();
+    let mut next = 100;
+    let mut point = |sys: &mut System, h: u32, uv: [f64; 2]| {
+        let (a, b) = (next, next + 1);
+        next += 2;
+        sys.add_param(Param::new(a, 2, uv[0])).unwrap();
+        sys.add_param(Param::new(b, 2, uv[1])).unwrap();
+        sys.add_entity(Entity::point_2d(h, 2, 3, [a, b])).unwrap();
+    };
+    point(&mut sys, 10, [0.0, 0.0]);
+    for i in 0..n {
+        let t = f64::from(i) * 0.001;
+        point(&mut sys, 11 + i, [9.0 * t.cos(), 9.0 * t.sin()]);
+        let c = Constraint::new(i + 1, 2, K::PtPtDistance)
+            .in_workplane(Some(3))
+            .with_points(10, 11 + i)
+            .with_val(10.0);
+        sys.add_constraint(c).unwrap();
+    }
+    sys
+}
+
+#[test]
+fn a_point_shared_by_too_many_constraints_is_a_typed_error_not_an_abort() {
+    // Every distance shares the centre's two unknowns: J Jᵀ is dense, n² / 2 entries.
+    let mut small = star(2_000);
+    assert!(small.solve_group(2).unwrap().outcome.is_ok());
+    let mut huge = star(12_000);
+    let err = huge.solve_group(2).unwrap_err();
+    assert!(
+        matches!(
+            err,
+            loci::SolveError::TooLarge {
+                equations: 12_000,
+                ..
+            }
+        ),
+        "{err}"
+    );
+    assert!(err.to_string().contains("12000 equations"), "{err}");
+}

@@ -74,10 +74,9 @@ fn consistent_from(eqs: &Equations, kernels: &[usize], values: &[f64], cfg: &Con
                 v + nudge * (1.0 + v.abs()) * (((i as f64 + 1.0) * 0.618_034).fract() - 0.5)
             })
             .collect();
-        if comp
-            .solve(&eqs.kernels, &mut x, values, cfg, &mut scratch)
-            .converged
-        {
+        let fin = comp.solve(&eqs.kernels, &mut x, values, cfg, &mut scratch);
+        // Too large to try is no evidence that the set fails.
+        if fin.converged || fin.too_large {
             return true;
         }
     }

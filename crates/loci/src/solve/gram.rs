@@ -184,12 +184,29 @@ pub(crate) enum Gram {
     Sparse(Box<SparseGram>),
 }
 
+/// The most products of two Jacobian entries a component's `G` may be built from (12 bytes
+/// each, and G's entries besides): beyond it the normal equations would take gigabytes.
+pub(crate) const MAX_PRODUCTS: usize = 1 << 26;
+
 impl Gram {
+    /// The number of products of two Jacobian entries that build `G`: the sum over columns
+    /// of `h (h + 1) / 2` for a column of `h` entries. A column shared by many equations (a
+    /// point many constraints refer to) makes it grow as the square of their number.
+    pub fn products(columns: &Columns) -> usize {
+        columns
+            .iter()
+            .map(|c| c.len() * (c.len() + 1) / 2)
+            .fold(0usize, usize::saturating_add)
+    }
+
     /// Builds the structure from the nonzeros of `J`, given column by column as lists of
     /// `(row, index into J's values)`.
     pub fn new(nrows: usize, columns: &Columns) -> Option<Self> {
         // Products of two entries of a column of J, each adding to one entry of G.
-        let pairs: usize = columns.iter().map(|c| c.len() * (c.len() + 1) / 2).sum();
+        let pairs = Self::products(columns);
+        if pairs > MAX_PRODUCTS {
+            return None;
+        }
         // Equations given in a natural order (a chain, a 3D chain: each constraint meets only
         // its neighbours) make a banded G, whose LDLᵀ fills nothing outside its envelope (each
         // row from the first row it meets to the diagonal): when that is about the size of G

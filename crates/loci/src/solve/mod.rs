@@ -22,6 +22,7 @@ mod report;
 mod substitute;
 
 pub use config::Config;
+pub(crate) use gram::MAX_PRODUCTS;
 pub use report::{Outcome, Report};
 
 use crate::equations::{compile_group, still_duplicates, Link, Owner};
@@ -330,6 +331,14 @@ fn solve_values(
             .map(|(comp, x)| comp.solve(kernels, x, &values, cfg, scratch))
             .collect()
     };
+    if let Some(ci) = finishes.iter().position(|f| f.too_large) {
+        let comp = &cache.components[ci];
+        return Err(SolveError::TooLarge {
+            equations: comp.rows,
+            unknowns: comp.scale.len(),
+            products: crate::solve::gram::Gram::products(&comp.columns),
+        });
+    }
     for (ci, fin) in finishes.into_iter().enumerate() {
         let comp = &cache.components[ci];
         report.iterations = report.iterations.max(fin.iterations);

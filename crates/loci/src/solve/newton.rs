@@ -50,6 +50,9 @@ pub(crate) struct Finish {
     /// Rows whose residual is above tolerance at the end.
     pub unsatisfied: Vec<usize>,
     pub residual: f64,
+    /// The normal equations would need more than [`super::gram::MAX_PRODUCTS`] products: not
+    /// attempted.
+    pub too_large: bool,
 }
 
 /// Work vectors reused across components, so that many small components cost no allocations.
@@ -438,6 +441,17 @@ impl Component {
     ) -> Finish {
         let m = self.rows;
         let ncols = x.len();
+        if Gram::products(&self.columns) > super::gram::MAX_PRODUCTS {
+            return Finish {
+                converged: false,
+                iterations: 0,
+                dropped: Vec::new(),
+                dependencies: Vec::new(),
+                unsatisfied: Vec::new(),
+                residual: f64::NAN,
+                too_large: true,
+            };
+        }
         if self.gram.is_none() {
             self.gram = Gram::new(m, &self.columns);
         }
@@ -664,6 +678,7 @@ impl Component {
             dependencies: Vec::new(),
             unsatisfied: (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect(),
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
+            too_large: false,
         };
         self.gram = gram_slot;
         if let (Some(gram), true) = (self.gram.as_mut(), factored) {
