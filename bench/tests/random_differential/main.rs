@@ -45,9 +45,6 @@ const PINNED_SEEDS: &[u64] = &[
     310, 516, 806, 850, 976, 991, 1287, 2473, 2485, 4204, 4465, 4650,
 ];
 
-const PARALLEL_3D: &str = "conflicting 3D system with a chain of parallels: does not reach the \
-    least-squares point where the conflict shows, so says did_not_converge where SolveSpace says \
-    inconsistent";
 const MERGED_COINCIDENT: &str = "a conflict between a distance and the coincidences that join its \
     two points: the set the rank test names leaves the merged coincidences out and holds alone, \
     so it is not reported, and no failing set is found: did_not_converge where SolveSpace says \
@@ -62,14 +59,7 @@ const KNOWN_FAILURES: &[(u64, &str)] = &[
         "2D conflicting (a horizontal line's midpoint): the set the rank test names holds alone, \
         and no failing set is found: did_not_converge where SolveSpace says inconsistent",
     ),
-    (10, MERGED_COINCIDENT),
-    (47, PARALLEL_3D),
     (53, MERGED_COINCIDENT),
-    (58, MERGED_COINCIDENT),
-    (77, MERGED_COINCIDENT),
-    (83, MERGED_COINCIDENT),
-    (89, MERGED_COINCIDENT),
-    (101, PARALLEL_3D),
     (
         310,
         "calls the system inconsistent (rightly) but names three parallels that are only \
@@ -79,11 +69,6 @@ const KNOWN_FAILURES: &[(u64, &str)] = &[
         516,
         "2D base: three angles, one the sum of the other two, all measured from the truth; \
         from the start loci calls them inconsistent (SolveSpace too)",
-    ),
-    (
-        976,
-        "2D conflicting: does not converge (residual 1e8) where SolveSpace proves the \
-        horizontal, vertical and 60-degree angle inconsistent",
     ),
     (
         4650,

@@ -19,22 +19,11 @@ fn load(name: &str) -> System {
 
 /// Cases whose right outcome loci does not reach yet, with what it says instead. Each still
 /// runs: it must never claim a solution.
-const NOT_YET: &[(&str, &str)] = &[
-    (
-        "parallel3d_spurious_min.json",
-        "did_not_converge: Newton does not reach the least-squares point where the rows become \
-         dependent, so no conflict can be shown (SolveSpace says inconsistent)",
-    ),
-    (
-        "pt_on_line3d_spurious_min.json",
-        "did_not_converge, as parallel3d_spurious_min",
-    ),
-    (
-        "s0026_base.json",
-        "satisfiable, but neither loci nor SolveSpace finds the solution from this start; loci \
+const NOT_YET: &[(&str, &str)] = &[(
+    "s0026_base.json",
+    "satisfiable, but neither loci nor SolveSpace finds the solution from this start; loci \
          names a set that fails from the drawing and from where it stopped",
-    ),
-];
+)];
 
 #[test]
 fn every_known_case_gives_the_right_outcome() {

@@ -22,6 +22,12 @@ pub(crate) fn consistent(
     starts: &[&[f64]],
     cfg: &Config,
 ) -> bool {
+    // A set is called a conflict only when solves that could have succeeded fail: never on a
+    // budget of iterations cut short by the caller.
+    let floor = Config::default().max_iterations;
+    let cfg = &cfg
+        .clone()
+        .with_max_iterations(cfg.max_iterations.max(floor));
     starts
         .iter()
         .any(|values| consistent_from(eqs, kernels, values, cfg))

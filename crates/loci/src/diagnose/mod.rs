@@ -259,6 +259,7 @@ pub(crate) fn name_conflicts(
             .map(|i| eqs.member(eqs.row_kernel[i] as usize))
             .collect()
     } else {
+        report.outcome = Outcome::Inconsistent;
         sets.into_iter().flat_map(|s| s.members).collect()
     };
     if !cfg.find_failed {
@@ -332,10 +333,15 @@ fn conflict_sets(
         }
     }
     // No candidate holds up, yet the solve stopped at a least-squares point with residuals
-    // left: the dependence may run through constraints that hold there (the ones that pin a
-    // line on which a point cannot be). Shrink the whole set of equations to a minimal set
-    // that fails while each of its parts solves, if it is small enough to try.
-    if out.is_empty() && !outcome.is_ok() && circuits::stationary_with_residual(eqs, lin, cfg) {
+    // left, or did not converge at all: the dependence may run through constraints that hold
+    // there (the ones that pin a line on which a point cannot be), or show only at a point the
+    // solve did not reach. Shrink the whole set of equations to a minimal set that fails while
+    // each of its parts solves, if it is small enough to try.
+    let stalled = outcome == Outcome::DidNotConverge;
+    if out.is_empty()
+        && !outcome.is_ok()
+        && (stalled || circuits::stationary_with_residual(eqs, lin, cfg))
+    {
         let all = members_of(&mut (0..eqs.rows));
         if all.len() <= WHOLE_SEARCH_LIMIT {
             let (members, verified) = minimal::minimise(eqs, &all, starts, cfg);

@@ -163,10 +163,16 @@ fn solve_cached(
     cache: &mut Cache,
 ) -> Result<Report, SolveError> {
     let (mut report, values) = solve_values(sys, group, dragged, cfg, cache)?;
-    if report.outcome == Outcome::Inconsistent {
+    if matches!(
+        report.outcome,
+        Outcome::Inconsistent | Outcome::DidNotConverge
+    ) {
         // Check the verdict and name the sets that cannot hold together, found on the
         // unmerged equations where the solve stopped (those of the constraints it found
-        // dependent first) and each shown to fail on its own; only failures pay for it.
+        // dependent, or left unsatisfied, first) and each shown to fail on its own; only
+        // failures pay for it. A solve that did not converge becomes inconsistent when such a
+        // set is found: the rows of an impossible system become dependent only at its
+        // least-squares point, which Newton may not reach.
         crate::diagnose::name_conflicts(
             sys,
             group,
