@@ -20,44 +20,7 @@ use std::path::{Path, PathBuf};
 
 /// Saved inputs that still fail, with why. They are replayed all the same and may pass or
 /// fail; remove an entry once its bug is fixed (the test then says so).
-const KNOWN_FAILURES: &[(&str, &str)] = &[
-    (
-        "json/check_panic_sort_order.json",
-        "diagnose::redundant sorts with a comparison that is not a total order and panics \
-         (in most runs, not all)",
-    ),
-    (
-        "json/parallel3d_line_vs_plane_normal.json",
-        "3D parallel keeps two components of the cross product: a line of the xy plane is \
-         accepted as parallel to the plane's normal",
-    ),
-    (
-        "corpus/json/parallel3d_handmade.json",
-        "3D parallel keeps two components of the cross product",
-    ),
-    (
-        "corpus/json/pt_on_line3d_handmade.json",
-        "3D pt_on_line keeps two components of the cross product",
-    ),
-    (
-        "corpus/json/pt_on_line3d_spurious_min.json",
-        "3D pt_on_line keeps two components of the cross product",
-    ),
-    (
-        "resolve/parallel3d_line_vs_plane_normal",
-        "3D parallel keeps two components of the cross product",
-    ),
-    (
-        "resolve/stale_cache_remove_then_add",
-        "Solver keys its cache on the counts of objects: a constraint removed and another \
-         added is solved with the old equations",
-    ),
-    (
-        "resolve/stale_cache_repointed_coincident",
-        "Solver keys its cache on the counts of objects: a constraint re-pointed through \
-         constraint_mut is solved with the old equations",
-    ),
-];
+const KNOWN_FAILURES: &[(&str, &str)] = &[];
 
 fn fuzz_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fuzz")

@@ -28,13 +28,13 @@ use std::fmt::Write;
 /// constraint retyped or re-pointed through `constraint_mut`) is solved with the old
 /// equations. When `true`, the target calls [`Solver::invalidate`] after such edits, so that
 /// the rest keeps being checked while the bug is open.
-pub const KNOWN_BUG_STALE_SOLVER_CACHE: bool = true;
+pub const KNOWN_BUG_STALE_SOLVER_CACHE: bool = false;
 
 /// Known bug: 3D `parallel`, `pt_on_line` (and the other constraints written as two
 /// components of a cross product: `cubic_line_tangent`, `same_orientation` and `symmetric`
 /// in 3D) accept geometry that breaks them, where both vectors are perpendicular to the axis
 /// dropped at the start. When `true`, their residuals are not checked.
-pub const KNOWN_BUG_3D_TWO_COMPONENT_CROSS: bool = true;
+pub const KNOWN_BUG_3D_TWO_COMPONENT_CROSS: bool = false;
 
 /// Which checks run: [`Skips::FUZZ`] for the fuzz target (known bugs skipped, so that the
 /// rest keeps being checked), [`Skips::NONE`] for the regression test (everything checked;
