@@ -559,6 +559,12 @@ impl Run {
         let fresh = loci::solve(&mut fresh_sys, G.into(), &self.dragged, &self.cfg);
         let (cached, fresh) = match (cached, fresh) {
             (Ok(c), Ok(f)) => (c, f),
+            // A group that owns nothing (every edit removed its objects) is an error for both,
+            // naming the groups there are.
+            (
+                Err(loci::SolveError::UnknownGroup { group, .. }),
+                Err(loci::SolveError::UnknownGroup { .. }),
+            ) if !before.groups().contains(&group) => return,
             (Err(e), _) => self.fail(
                 &format!("{label}: the Solver rejects a well-formed system: {e}"),
                 &before,

@@ -67,6 +67,8 @@ pub(crate) struct Scratch {
     rt: Vec<f64>,
     xs: Vec<f64>,
     jl: Vec<f64>,
+    /// The starting point, for [`Component::project`].
+    x0: Vec<f64>,
 }
 
 /// How many past merits the line search compares a step with.
@@ -78,6 +80,30 @@ const STALL: f64 = 1e-6;
 /// A step no larger than this (relative to the unknown) leaves the Jacobian as it was for the
 /// rank test.
 const TINY_STEP: f64 = 1e-6;
+
+/// Work vectors of [`Component::project`], borrowed from the solve's.
+struct Work<'a> {
+    r: &'a mut [f64],
+    jn: &'a mut [f64],
+    inv: &'a mut [f64],
+    y: &'a mut [f64],
+    dz: &'a mut [f64],
+    keep: &'a mut [f64],
+    /// The residuals at `keep`, as the solve left them.
+    r_keep: &'a mut [f64],
+    xs: &'a mut [f64],
+    jl: &'a mut Vec<f64>,
+}
+
+/// Most rounds of the projection onto the solution nearest the drawing, and of Newton steps
+/// after it to restore the equations.
+const MAX_PROJECTION: usize = 30;
+const MAX_RESTORE: usize = 5;
+
+/// A projection step smaller than this (relative to the unknown) ends the projection: the
+/// answer is then within about this much of the nearest solution, far below what a drawing
+/// shows, and the rounds it would take to go further cost as much as Newton iterations.
+const PROJECTED: f64 = 1e-9;
 
 /// How many times one solve may move the unknowns of an equation that has no gradient where
 /// it does not hold (see [`Component::nudge_singular`]).
@@ -430,6 +456,85 @@ impl Component {
         moved
     }
 
+    /// Moves a solution `x` of an under-constrained component along the solutions to the one
+    /// nearest `x0` (least weighted movement, columns weighted by `1 / scale`): Gauss-Newton
+    /// on that least-distance problem, each step the projection of `x0` onto the equations
+    /// linearised at `x`. Ends with the factorisation at the final point, for the rank test;
+    /// keeps `x` as it was if the equations no longer hold at the end. Returns the iterations.
+    fn project(
+        &self,
+        kernels: &[Kernel],
+        x: &mut [f64],
+        x0: &[f64],
+        cfg: &Config,
+        gram: &mut Gram,
+        w: &mut Work<'_>,
+    ) -> usize {
+        let (m, ncols) = (self.rows, x.len());
+        w.keep.copy_from_slice(x);
+        w.r_keep.copy_from_slice(w.r);
+        let mut its = 0;
+        let holds = |r: &[f64]| r.iter().all(|v| v.abs() <= cfg.tolerance);
+        let (mut projected, mut restores) = (false, 0);
+        for round in 0..MAX_PROJECTION + MAX_RESTORE {
+            // After the projection, plain Newton steps put the equations back to where Newton
+            // leaves them: at least one, so that linear equations hold exactly again.
+            let projecting = round < MAX_PROJECTION && !projected;
+            if !projecting {
+                if restores > 0 && holds(w.r) {
+                    break;
+                }
+                restores += 1;
+            }
+            for c in 0..ncols {
+                w.dz[c] = if projecting {
+                    (x0[c] - x[c]) / self.scale[c]
+                } else {
+                    0.0
+                };
+            }
+            // y = -rn - Jn z, then z + Jnᵀ y: the nearest point to z on J dz = -r.
+            for i in 0..m {
+                w.y[i] = -w.r[i] * w.inv[i];
+            }
+            for (c, col) in self.columns.iter().enumerate() {
+                for &(row, idx) in col {
+                    w.y[row as usize] -= w.jn[idx as usize] * w.dz[c];
+                }
+            }
+            gram.solve(w.y);
+            let mut largest = 0.0f64;
+            for (c, col) in self.columns.iter().enumerate() {
+                let mut acc = w.dz[c];
+                for &(row, idx) in col {
+                    acc += w.jn[idx as usize] * w.y[row as usize];
+                }
+                let d = acc * self.scale[c];
+                x[c] += d;
+                largest = largest.max(d.abs() / (1.0 + x[c].abs()));
+            }
+            its += 1;
+            self.jacobian(kernels, x, w.r, w.jn, w.inv, w.xs, w.jl);
+            gram.assemble(w.jn);
+            if !gram.factor(0.0, cfg.rank_tolerance) || !largest.is_finite() {
+                break;
+            }
+            if projecting && largest <= PROJECTED {
+                projected = true;
+            }
+        }
+        if !holds(w.r) || x.iter().any(|v| !v.is_finite()) {
+            x.copy_from_slice(w.keep);
+            self.jacobian(kernels, x, w.r, w.jn, w.inv, w.xs, w.jl);
+            gram.assemble(w.jn);
+            gram.factor(0.0, cfg.rank_tolerance);
+            // The residuals the solve converged with (a written-out evaluation can round
+            // differently from the one with derivatives).
+            w.r.copy_from_slice(w.r_keep);
+        }
+        its
+    }
+
     /// Solves from `x` in place.
     pub fn solve(
         &mut self,
@@ -466,7 +571,12 @@ impl Component {
             rt,
             xs,
             jl,
+            x0,
         } = scratch;
+        if cfg.nearest {
+            x0.clear();
+            x0.extend_from_slice(x);
+        }
         // Every entry is written before it is read, so vectors of the right length from an
         // earlier solve are used as they are.
         for (v, n) in [
@@ -669,6 +779,25 @@ impl Component {
                 r.copy_from_slice(rt);
                 converged = true;
                 break;
+            }
+        }
+        // A start that already holds is its own nearest solution.
+        if converged && cfg.nearest && factored && iterations > 0 {
+            if let Some(gram) = gram_slot.as_mut() {
+                if m - gram.dropped().len() < ncols {
+                    let mut work = Work {
+                        r,
+                        jn,
+                        inv,
+                        y,
+                        dz: dx,
+                        keep: xt,
+                        r_keep: rt,
+                        xs,
+                        jl,
+                    };
+                    iterations += self.project(kernels, x, x0, cfg, gram, &mut work);
+                }
             }
         }
         let mut fin = Finish {
