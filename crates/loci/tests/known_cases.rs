@@ -3,6 +3,9 @@
 //! right outcome; a `solved` one must hold every equation, and no case may claim a solution
 //! that breaks a constraint.
 
+mod common;
+
+use common::{Sketch, WP};
 use loci::{solve, Config, Outcome, System};
 use std::path::PathBuf;
 
@@ -133,33 +136,18 @@ fn the_jansen_linkage_lands_nearest_the_drawing_when_asked() {
 /// when `mixed`), as `gen_pair.py` writes them.
 fn pair(n: u32, mixed: bool) -> System {
     use loci::{Constraint, ConstraintKind as K, Entity, Param};
-    let mut sys = System::new();
-    for (h, v) in [
-        (1, 0.0),
-        (2, 0.0),
-        (3, 0.0),
-        (4, 1.0),
-        (5, 0.0),
-        (6, 0.0),
-        (7, 0.0),
-    ] {
-        sys.add_param(Param::new(h, 1, v)).unwrap();
-    }
+    let mut sys = Sketch::new().sys;
     for (h, v) in [(11, 0.0), (12, 0.0), (13, 9.0), (14, 1.0)] {
         sys.add_param(Param::new(h, 2, v)).unwrap();
     }
-    sys.add_entity(Entity::point_3d(1, 1, [1, 2, 3])).unwrap();
-    sys.add_entity(Entity::normal_3d(2, 1, [4, 5, 6, 7]))
+    sys.add_entity(Entity::point_2d(11, 2, WP, [11, 12]))
         .unwrap();
-    sys.add_entity(Entity::workplane(3, 1, 1, 2)).unwrap();
-    sys.add_entity(Entity::point_2d(11, 2, 3, [11, 12]))
-        .unwrap();
-    sys.add_entity(Entity::point_2d(12, 2, 3, [13, 14]))
+    sys.add_entity(Entity::point_2d(12, 2, WP, [13, 14]))
         .unwrap();
     for i in 0..n {
         let val = if mixed { 10.0 + f64::from(i % 2) } else { 10.0 };
         let c = Constraint::new(i + 1, 2, K::PtPtDistance)
-            .in_workplane(Some(3))
+            .in_workplane(Some(WP))
             .with_points(
                 if i % 3 == 0 { 12 } else { 11 },
                 if i % 3 == 0 { 11 } else { 12 },
@@ -191,37 +179,22 @@ fn many_copies_of_one_constraint_cost_linear_time_and_memory() {
 /// `n` points of a workplane, each at distance 10 from one centre point.
 fn star(n: u32) -> System {
     use loci::{Constraint, ConstraintKind as K, Entity, Param};
-    let mut sys = System::new();
-    for (h, v) in [
-        (1, 0.0),
-        (2, 0.0),
-        (3, 0.0),
-        (4, 1.0),
-        (5, 0.0),
-        (6, 0.0),
-        (7, 0.0),
-    ] {
-        sys.add_param(Param::new(h, 1, v)).unwrap();
-    }
-    sys.add_entity(Entity::point_3d(1, 1, [1, 2, 3])).unwrap();
-    sys.add_entity(Entity::normal_3d(2, 1, [4, 5, 6, 7]))
-        .unwrap();
-    sys.add_entity(Entity::workplane(3, 1, 1, 2)).unwrap();
-    let mut next = 100;
+    let mut sys = Sketch::new().sys;
+    let mut next = 10_000;
     let mut point = |sys: &mut System, h: u32, uv: [f64; 2]| {
         let (a, b) = (next, next + 1);
         next += 2;
         sys.add_param(Param::new(a, 2, uv[0])).unwrap();
         sys.add_param(Param::new(b, 2, uv[1])).unwrap();
-        sys.add_entity(Entity::point_2d(h, 2, 3, [a, b])).unwrap();
+        sys.add_entity(Entity::point_2d(h, 2, WP, [a, b])).unwrap();
     };
-    point(&mut sys, 10, [0.0, 0.0]);
+    point(&mut sys, 1_000, [0.0, 0.0]);
     for i in 0..n {
         let t = f64::from(i) * 0.001;
-        point(&mut sys, 11 + i, [9.0 * t.cos(), 9.0 * t.sin()]);
+        point(&mut sys, 1_001 + i, [9.0 * t.cos(), 9.0 * t.sin()]);
         let c = Constraint::new(i + 1, 2, K::PtPtDistance)
-            .in_workplane(Some(3))
-            .with_points(10, 11 + i)
+            .in_workplane(Some(WP))
+            .with_points(1_000, 1_001 + i)
             .with_val(10.0);
         sys.add_constraint(c).unwrap();
     }
