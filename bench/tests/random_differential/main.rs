@@ -55,12 +55,6 @@ const MERGED_COINCIDENT: &str = "a conflict between a distance and the coinciden
 /// can be removed as the fix lands.
 const KNOWN_FAILURES: &[(u64, &str)] = &[
     (
-        4204,
-        "2D conflicting (an angle against horizontal and vertical lines): no set of the \
-        constraints left unsatisfied is shown to fail on its own, so did_not_converge where \
-        SolveSpace says inconsistent",
-    ),
-    (
         4,
         "2D conflicting (a horizontal line's midpoint): the set the rank test names holds alone, \
         and no failing set is found: did_not_converge where SolveSpace says inconsistent",

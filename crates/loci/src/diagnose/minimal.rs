@@ -22,25 +22,30 @@ pub(crate) fn consistent(
     starts: &[&[f64]],
     cfg: &Config,
 ) -> bool {
+    check(eqs, kernels, starts, cfg, false)
+}
+
+/// [`consistent`], or with `quick` a check on SolveSpace's budget for a whole sketch and from
+/// the given starts only: for large sets checked as they are found (a loop of hundreds of
+/// constraints through a grid), whose failing solves rarely stall early and at the full budget
+/// took 50 times as long to check as to find. Never for the deletion filter, whose verdicts on
+/// parts of a set must be right for the set to be minimal.
+fn check(eqs: &Equations, kernels: &[usize], starts: &[&[f64]], cfg: &Config, quick: bool) -> bool {
     // A set is called a conflict only when solves that could have succeeded fail: never on a
-    // budget of iterations cut short by the caller. Large sets (a loop of hundreds of
-    // constraints through a grid) get the budget SolveSpace gives a whole sketch, and no
-    // nudged starts: their failing solves rarely stall early, and at the full budget a
-    // 401-constraint loop took 50 times as long to check as to find.
-    let large = kernels.len() > LARGE_SET;
-    let budget = if large {
+    // budget of iterations cut short by the caller.
+    let budget = if quick {
         LARGE_SET_ITERATIONS
     } else {
         cfg.max_iterations.max(Config::default().max_iterations)
     };
     let cfg = &cfg.clone().with_max_iterations(budget);
-    let nudges: &[f64] = if large { &[0.0] } else { &[0.0, 1e-3] };
+    let nudges: &[f64] = if quick { &[0.0] } else { &[0.0, 1e-3] };
     starts
         .iter()
         .any(|values| consistent_from(eqs, kernels, values, cfg, nudges))
 }
 
-/// Sets of more constraints than this are checked on a smaller budget.
+/// Sets of more constraints than this, checked whole, are checked quickly.
 const LARGE_SET: usize = 16;
 
 /// The iterations a solve of a large set gets before it counts as failing.
@@ -112,7 +117,7 @@ fn consistent_from(
 /// deletion filter's one solve per member.
 pub(crate) fn fails(eqs: &Equations, set: &[Member], starts: &[&[f64]], cfg: &Config) -> bool {
     let kernels: Option<Vec<usize>> = set.iter().map(|&m| eqs.kernel_of(m)).collect();
-    kernels.is_some_and(|k| !consistent(eqs, &k, starts, cfg))
+    kernels.is_some_and(|k| !check(eqs, &k, starts, cfg, k.len() > LARGE_SET))
 }
 
 /// Shrinks `set` to a minimal conflict by the deletion filter: a member whose removal leaves

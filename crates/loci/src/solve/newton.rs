@@ -113,9 +113,6 @@ const MAX_NUDGES: usize = 3;
 /// dependent, tried in turn once damped steps are in use.
 const TRUNCATIONS: [f64; 4] = [0.0, 1e-8, 1e-6, 1e-4];
 
-/// Truncated steps are tried once the merit is this far below its starting value.
-const TRUNCATE_BELOW: f64 = 1e-4;
-
 /// The size of such a move, relative to the equation's residual.
 const NUDGE: f64 = 1e-3;
 
@@ -708,11 +705,7 @@ impl Component {
                     alpha *= 0.5;
                 }
             }
-            // Only near a solution (the merit far below where the solve started): a solve of
-            // constraints that cannot all hold, damped to its least-squares point, would pay
-            // four factorisations an iteration for nothing.
-            let near = history.first().is_some_and(|&m| m0 <= TRUNCATE_BELOW * m);
-            if !accepted && damping.is_some() && factored && near {
+            if !accepted && damping.is_some() && factored {
                 // Damped steps converge only linearly where rows are nearly dependent: the
                 // rows of redundant constraints are dependent exactly at the solution and
                 // nearly so around it, with singular values that shrink with the residual, so
