@@ -658,6 +658,22 @@ impl Component {
             };
             // The normalised residual, the quantity the step minimises.
             let m0 = merit(r, inv);
+            // The whole step from the factorisation `gram` holds lands at `xt` (residuals in
+            // `rt`): whether it lowers the merit.
+            let full_step_lowers = |gram: &mut Gram,
+                                    y: &mut [f64],
+                                    dx: &mut [f64],
+                                    xt: &mut [f64],
+                                    rt: &mut [f64],
+                                    xs: &mut [f64]| {
+                step(gram, y, dx);
+                for c in 0..ncols {
+                    xt[c] = x[c] + dx[c];
+                }
+                self.residuals(kernels, xt, rt, xs);
+                let mt = merit(rt, inv);
+                mt.is_finite() && (mt < m0 || mt == 0.0)
+            };
             // Non-monotone acceptance (Grippo, Lampariello and Lucidi, 1986): a step may raise the
             // merit above the current one as long as it stays below the largest of the last few,
             // and below ten times the current one. Long chains that must swing far take fewer,
@@ -716,16 +732,7 @@ impl Component {
                 // redundant rows follow them.
                 for trunc in TRUNCATIONS {
                     let tol = cfg.rank_tolerance.max(trunc);
-                    if !gram.factor(0.0, tol) {
-                        continue;
-                    }
-                    step(gram, y, dx);
-                    for c in 0..ncols {
-                        xt[c] = x[c] + dx[c];
-                    }
-                    self.residuals(kernels, xt, rt, xs);
-                    let mt = merit(rt, inv);
-                    if mt.is_finite() && (mt < m0 || mt == 0.0) {
+                    if gram.factor(0.0, tol) && full_step_lowers(gram, y, dx, xt, rt, xs) {
                         accepted = true;
                         alpha = 1.0;
                         break;
@@ -740,17 +747,11 @@ impl Component {
                 // Adaptive damping as in Nocedal & Wright, "Numerical Optimization", 10.3.
                 let mut lambda = damping.unwrap_or(1e-6);
                 while lambda < 1e12 {
-                    if gram.factor(lambda, cfg.rank_tolerance) {
-                        step(gram, y, dx);
-                        for c in 0..ncols {
-                            xt[c] = x[c] + dx[c];
-                        }
-                        self.residuals(kernels, xt, rt, xs);
-                        let mt = merit(rt, inv);
-                        if mt.is_finite() && (mt < m0 || mt == 0.0) {
-                            accepted = true;
-                            break;
-                        }
+                    if gram.factor(lambda, cfg.rank_tolerance)
+                        && full_step_lowers(gram, y, dx, xt, rt, xs)
+                    {
+                        accepted = true;
+                        break;
                     }
                     lambda *= 10.0;
                 }
