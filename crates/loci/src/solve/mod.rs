@@ -280,15 +280,10 @@ fn solve_values(
 
     // 4. Newton per component.
     let mut report = Report {
-        outcome: Outcome::Okay,
-        dof: 0,
-        failed: Vec::new(),
-        failed_entities: Vec::new(),
-        iterations: 0,
-        residual: 0.0,
         unknowns: n_unknown - sub.removed,
         equations: kernels.iter().map(|k| k.rows).sum(),
         components: ncomps,
+        ..Report::empty()
     };
     let mut rank_total = 0usize;
     let mut redundant: Vec<Owner> = Vec::new();
