@@ -118,14 +118,15 @@ fn from_slvs(file: &Path, group: Option<u32>, no_solve: bool) -> anyhow::Result<
     } else {
         None
     };
-    // The groups before this one in the file's order, and the constants loci adds.
-    let mut earlier: BTreeSet<GroupId> = f
+    // The groups before this one in the file's order. Not the constants loci adds
+    // (FIXED_GROUP): they include copies that later groups make of this one.
+    let earlier: BTreeSet<GroupId> = f
         .groups
         .iter()
         .take_while(|x| x.h != g)
         .map(|x| x.h)
+        .filter(|h| *h != FIXED_GROUP)
         .collect();
-    earlier.insert(FIXED_GROUP);
     let name = f.group(g).map_or(String::new(), |x| x.name.clone());
     let title = match &diagnosis {
         Some(d) => format!(

@@ -136,7 +136,9 @@ pub(crate) fn angle(
         }
     }
     let (_, u, v) = best;
-    let radius = 30.0;
+    // A narrow angle gets a wider arc, so that the value fits between its rays.
+    let opening = u.dot(v).clamp(-1.0, 1.0).acos().max(1e-3);
+    let radius = (30.0_f64).max(22.0 / opening).min(160.0);
     // Dashed extensions where the vertex lies off a segment.
     let helper = format!("{} stroke-dasharray=\"{HELPER_DASH}\"", style::thin(ink));
     for (p, q, r) in [(a0, a1, u), (b0, b1, v)] {

@@ -209,15 +209,15 @@ pub(crate) fn arc_angles(c: P2, s: P2, f: P2) -> (f64, f64) {
     (a0, sweep)
 }
 
-/// Writes the items: curves first, then points on top of them.
+/// Writes the items: earlier groups' curves under the group's, then points on top of all
+/// curves.
 pub(crate) fn draw(svg: &mut Svg, items: &[Item], px: &ToPixels) {
     svg.open("id=\"geometry\"");
-    for pass_points in [false, true] {
+    for (points, earlier) in [(false, true), (false, false), (true, true), (true, false)] {
         for it in items {
-            if matches!(it.shape, Shape::Point(_)) != pass_points {
-                continue;
+            if matches!(it.shape, Shape::Point(_)) == points && (it.ink == Ink::Earlier) == earlier {
+                draw_item(svg, it, px);
             }
-            draw_item(svg, it, px);
         }
     }
     svg.close();
@@ -291,6 +291,14 @@ fn draw_item(svg: &mut Svg, it: &Item, px: &ToPixels) {
                 num(p[3].y)
             );
             svg.path(&d, &p, &attrs);
+            // The control polygon's handles, faint, as sketchers show them.
+            let handle = format!(
+                "class=\"handle\" fill=\"none\" stroke=\"{}\" stroke-width=\"0.8\" stroke-dasharray=\"{}\"",
+                it.ink.colour(),
+                style::HELPER_DASH
+            );
+            svg.line(p[0], p[1], &handle);
+            svg.line(p[3], p[2], &handle);
         }
     }
 }

@@ -89,7 +89,8 @@ impl Ctx<'_, '_> {
             return Some((a.mid(b), self.outward(a.mid(b), n).scale(-1.0)));
         }
         if let Some((c, r, arc)) = self.round(h) {
-            let t = arc.map_or(std::f64::consts::FRAC_PI_4, |(a0, s)| a0 + s / 2.0);
+            // Off an arc's middle, where its radius is dimensioned.
+            let t = arc.map_or(std::f64::consts::FRAC_PI_4, |(a0, s)| a0 + s * 0.3);
             let d = P2::new(t.cos(), -t.sin());
             return Some((c.plus(d.scale(r)), d));
         }

@@ -92,10 +92,26 @@ pub fn render_svg(
 
     let mut svg = Svg::default();
     geometry::draw(&mut svg, &items, &px);
-    let centre = svg
-        .bounds
-        .rect
-        .map_or(P2::new(0.0, 0.0), |r| r.lo.mid(r.hi));
+    // The mean of the group's points lies inside a closed profile (the middle of the box
+    // need not: a triangle's hypotenuse runs through it), so dimensions set off away from
+    // it land outside.
+    let own: Vec<P2> = items
+        .iter()
+        .filter(|it| it.ink != Ink::Earlier)
+        .filter_map(|it| match it.shape {
+            geometry::Shape::Point(p) => Some(px.px(p)),
+            _ => None,
+        })
+        .collect();
+    let centre = if own.is_empty() {
+        svg.bounds
+            .rect
+            .map_or(P2::new(0.0, 0.0), |r| r.lo.mid(r.hi))
+    } else {
+        own.iter()
+            .fold(P2::new(0.0, 0.0), |a, p| a.plus(*p))
+            .scale(1.0 / own.len() as f64)
+    };
 
     let conflicts: BTreeSet<ConstraintId> = diagnosis
         .into_iter()
