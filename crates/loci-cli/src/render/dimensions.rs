@@ -138,7 +138,24 @@ pub(crate) fn angle(
     let (_, u, v) = best;
     // A narrow angle gets a wider arc, so that the value fits between its rays.
     let opening = u.dot(v).clamp(-1.0, 1.0).acos().max(1e-3);
-    let radius = (30.0_f64).max(22.0 / opening).min(160.0);
+    let least = (30.0_f64).max(22.0 / opening).min(160.0);
+    // Where both segments lie along their rays: an arc there touches both lines, so the
+    // angle reads as theirs even when the lines meet far away.
+    let span = |p: P2, q: P2, r: P2| {
+        let (tp, tq) = (p.minus(x).dot(r), q.minus(x).dot(r));
+        (tp.min(tq), tp.max(tq))
+    };
+    let ((la, ha), (lb, hb)) = (span(a0, a1, u), span(b0, b1, v));
+    let (lo, hi) = (la.max(lb), ha.min(hb));
+    let radius = if lo <= hi && hi >= least {
+        if lo < least {
+            least
+        } else {
+            lo + ((hi - lo) / 4.0).min(20.0)
+        }
+    } else {
+        least
+    };
     // Dashed extensions where the vertex lies off a segment.
     let helper = format!("{} stroke-dasharray=\"{HELPER_DASH}\"", style::thin(ink));
     for (p, q, r) in [(a0, a1, u), (b0, b1, v)] {
