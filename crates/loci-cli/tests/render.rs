@@ -135,6 +135,11 @@ fn a_chosen_slvs_group_draws_earlier_groups_muted() {
     // Group 2's square (requests of group 2) is muted; group 4's sketch is not.
     assert!(!earlier.is_empty() && !own.is_empty());
     assert!(own.iter().all(|h| h & 0x8000_0000 == 0), "{own:x?}");
+    // Nothing group 5 generates (handles 0x8005xxxx: its extrusion of this sketch) is
+    // drawn, while the extrusion of the earlier square by group 3 is.
+    let drawn = handles(&svg, "data-entity", "entity");
+    assert!(drawn.iter().all(|h| h >> 16 != 0x8005), "copies made by a later group");
+    assert!(drawn.iter().any(|h| h >> 16 == 0x8003));
     // Group 5 (after 4) is not drawn at all: nothing of the whole file after the group.
     let last = loci(&["render", &f]);
     assert_eq!(last.status.code(), Some(0));
@@ -173,4 +178,29 @@ fn bad_input_exits_3_as_solve_does() {
     let r = loci(&["render", &data("arc_line_tangent.slvs"), "--group", "77"]);
     assert_eq!(r.status.code(), Some(3));
     assert!(String::from_utf8_lossy(&r.stderr).contains("there is no group 77"));
+}
+
+#[test]
+fn a_translate_group_draws_its_copies_in_the_group_s_colours() {
+    let r = loci(&["render", &data("translate_nd.slvs")]);
+    assert_eq!(r.status.code(), Some(0), "{}", String::from_utf8_lossy(&r.stderr));
+    let svg = String::from_utf8(r.stdout).unwrap();
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    // The copied lines are constants of loci's model joining the group's moving points:
+    // drawn as the group's, in the colour of those points.
+    let copies: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.tag_name().name() == "line")
+        .filter(|n| {
+            n.attribute("data-entity")
+                .is_some_and(|h| h.parse::<u32>().unwrap() >> 16 == 0x8007)
+        })
+        .collect();
+    assert!(copies.len() >= 8, "{}", copies.len());
+    for n in &copies {
+        let class = n.attribute("class").unwrap();
+        assert!(class.contains(" free") || class.contains(" fixed"), "{class}");
+    }
+    // 3D without a workplane: drawn isometric, so the two translation axes show apart.
+    assert!(!svg.contains("NaN"));
 }

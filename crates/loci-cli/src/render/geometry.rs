@@ -5,6 +5,7 @@ use super::style::{self, Ink};
 use super::svg::{num, Svg};
 use super::view::{workplane_frame, Projection, ToPixels, View, P2};
 use super::RenderOptions;
+use loci::format::slvs::FIXED_GROUP;
 use loci::{Diagnosis, EntityId, EntityKind, EntityType, GroupId, Member};
 use std::collections::BTreeSet;
 use std::f64::consts::TAU;
@@ -90,23 +91,53 @@ pub(crate) fn collect(
             Member::Constraint(_) => None,
         })
         .collect();
+    let sys = view.sys;
+    let shown = |g: GroupId| g == group || shows_earlier(opts, group, g);
+    let moves = |h: EntityId| diagnosis.is_some_and(|d| d.freedom(h).is_some_and(|f| f.dof > 0));
     let mut items = Vec::new();
-    for e in view.sys.entities() {
+    for e in sys.entities() {
         let current = e.group == group;
-        if !current && !shows_earlier(opts, group, e.group) {
-            continue;
-        }
+        // The curves loci holds constant for a `.slvs` file's copies are drawn with the
+        // points they join when those are all drawn: the copies this group or an earlier
+        // one makes, not those of later groups.
+        let copy_of: Option<Vec<GroupId>> = (e.group == FIXED_GROUP && !shown(e.group))
+            .then(|| {
+                e.kind
+                    .references()
+                    .iter()
+                    .filter_map(|(_, h)| sys.entity(*h))
+                    .filter(|r| r.entity_type().is_point())
+                    .map(|r| r.group)
+                    .collect()
+            });
+        let joins_current = match &copy_of {
+            Some(groups) => {
+                if groups.is_empty() || !groups.iter().all(|g| shown(*g)) || groups.iter().all(|g| *g == FIXED_GROUP) {
+                    continue;
+                }
+                groups.contains(&group)
+            }
+            None if !current && !shown(e.group) => continue,
+            None => false,
+        };
         let Some(shape) = shape(view, e.h) else {
             continue;
         };
-        let ink = if !current {
+        let ink = if joins_current {
+            let points = e.kind.references();
+            match diagnosis {
+                None => Ink::Plain,
+                Some(_) if points.iter().any(|(_, h)| moves(*h)) => Ink::Free,
+                Some(_) => Ink::Fixed,
+            }
+        } else if !current {
             Ink::Earlier
         } else if conflicted.contains(&e.h) {
             Ink::Conflict
         } else {
             match diagnosis {
                 None => Ink::Plain,
-                Some(d) if d.freedom(e.h).is_some_and(|f| f.dof > 0) => Ink::Free,
+                Some(_) if moves(e.h) => Ink::Free,
                 Some(_) => Ink::Fixed,
             }
         };
