@@ -66,6 +66,32 @@ impl Shape {
     }
 }
 
+impl Shape {
+    /// Points along the shape (drawing plane), close enough that straight pieces between
+    /// them follow it.
+    pub(crate) fn samples(&self) -> Vec<P2> {
+        match self {
+            Shape::Circle { c, r } => (0..=64)
+                .map(|i| {
+                    let t = TAU * f64::from(i) / 64.0;
+                    P2::new(c.x + r * t.cos(), c.y + r * t.sin())
+                })
+                .collect(),
+            Shape::Cubic(p) => (0..=32)
+                .map(|i| {
+                    let t = f64::from(i) / 32.0;
+                    let s = 1.0 - t;
+                    p[0].scale(s * s * s)
+                        .plus(p[1].scale(3.0 * s * s * t))
+                        .plus(p[2].scale(3.0 * s * t * t))
+                        .plus(p[3].scale(t * t * t))
+                })
+                .collect(),
+            _ => self.extent(),
+        }
+    }
+}
+
 /// Which groups besides `group` are drawn (muted): those `opts` names, or by default every
 /// group with a lower handle.
 fn shows_earlier(opts: &RenderOptions, group: GroupId, g: GroupId) -> bool {

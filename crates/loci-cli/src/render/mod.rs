@@ -134,9 +134,18 @@ pub fn render_svg(
         labels: labels::Labels::default(),
         measured,
     };
+    // Labels keep off the points and the curves.
     for it in &items {
-        if let geometry::Shape::Point(p) = it.shape {
-            ctx.labels.block(px.px(p), 8.0);
+        let pts: Vec<P2> = it.shape.samples().into_iter().map(|p| px.px(p)).collect();
+        if let [p] = pts.as_slice() {
+            ctx.labels.block(*p, 8.0);
+        }
+        for w in pts.windows(2) {
+            let n = (w[1].minus(w[0]).norm() / 6.0).ceil().min(400.0) as usize;
+            for i in 0..=n {
+                let t = i as f64 / n.max(1) as f64;
+                ctx.labels.block(w[0].plus(w[1].minus(w[0]).scale(t)), 3.0);
+            }
         }
     }
     svg.open("id=\"constraints\"");
