@@ -12,7 +12,9 @@ fn loci(args: &[&str]) -> Output {
 }
 
 fn repo(rel: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..").join(rel)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(rel)
 }
 
 fn data(name: &str) -> String {
@@ -44,7 +46,10 @@ fn examples() -> Vec<PathBuf> {
 fn handles(svg: &str, key: &str, word: &str) -> BTreeSet<u32> {
     let doc = roxmltree::Document::parse(svg).expect("well-formed SVG");
     doc.descendants()
-        .filter(|n| n.attribute("class").is_some_and(|c| c.split(' ').any(|w| w == word)))
+        .filter(|n| {
+            n.attribute("class")
+                .is_some_and(|c| c.split(' ').any(|w| w == word))
+        })
         .filter_map(|n| n.attribute(key)?.parse().ok())
         .collect()
 }
@@ -52,10 +57,7 @@ fn handles(svg: &str, key: &str, word: &str) -> BTreeSet<u32> {
 #[test]
 fn every_example_renders_with_solve_s_exit_code() {
     for p in examples() {
-        let out = scratch(&format!(
-            "{}.svg",
-            p.file_stem().unwrap().to_string_lossy()
-        ));
+        let out = scratch(&format!("{}.svg", p.file_stem().unwrap().to_string_lossy()));
         let r = loci(&["render", p.to_str().unwrap(), "-o", out.to_str().unwrap()]);
         let s = loci(&["solve", p.to_str().unwrap()]);
         assert_eq!(r.status.code(), s.status.code(), "{}", p.display());
@@ -100,7 +102,12 @@ fn the_inconsistent_example_has_its_conflict_in_red() {
 #[test]
 fn a_slvs_group_renders_with_its_construction_geometry_dashed() {
     let plain = loci(&["render", &data("arc_line_tangent.slvs")]);
-    assert_eq!(plain.status.code(), Some(0), "{}", String::from_utf8_lossy(&plain.stderr));
+    assert_eq!(
+        plain.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&plain.stderr)
+    );
     let plain = String::from_utf8(plain.stdout).unwrap();
     let r = loci(&["render", &data("arc_line_tangent_construction.slvs")]);
     assert_eq!(r.status.code(), Some(0));
@@ -125,7 +132,12 @@ fn a_chosen_slvs_group_draws_earlier_groups_muted() {
     let f = data("tangent_crossing.slvs");
     let out = scratch("crossing.svg");
     let r = loci(&["render", &f, "--group", "4", "-o", out.to_str().unwrap()]);
-    assert_eq!(r.status.code(), Some(0), "{}", String::from_utf8_lossy(&r.stderr));
+    assert_eq!(
+        r.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&r.stderr)
+    );
     let svg = std::fs::read_to_string(&out).unwrap();
     let earlier = handles(&svg, "data-entity", "earlier");
     let own: BTreeSet<u32> = handles(&svg, "data-entity", "entity")
@@ -138,7 +150,10 @@ fn a_chosen_slvs_group_draws_earlier_groups_muted() {
     // Nothing group 5 generates (handles 0x8005xxxx: its extrusion of this sketch) is
     // drawn, while the extrusion of the earlier square by group 3 is.
     let drawn = handles(&svg, "data-entity", "entity");
-    assert!(drawn.iter().all(|h| h >> 16 != 0x8005), "copies made by a later group");
+    assert!(
+        drawn.iter().all(|h| h >> 16 != 0x8005),
+        "copies made by a later group"
+    );
     assert!(drawn.iter().any(|h| h >> 16 == 0x8003));
     // Group 5 (after 4) is not drawn at all: nothing of the whole file after the group.
     let last = loci(&["render", &f]);
@@ -152,7 +167,10 @@ fn no_solve_draws_the_file_s_values() {
     let solved = loci(&["render", p.to_str().unwrap()]);
     let raw = loci(&["render", p.to_str().unwrap(), "--no-solve"]);
     assert_eq!(raw.status.code(), Some(0));
-    assert_ne!(solved.stdout, raw.stdout, "the file's start is not its solution");
+    assert_ne!(
+        solved.stdout, raw.stdout,
+        "the file's start is not its solution"
+    );
     roxmltree::Document::parse(std::str::from_utf8(&raw.stdout).unwrap()).unwrap();
 }
 
@@ -183,7 +201,12 @@ fn bad_input_exits_3_as_solve_does() {
 #[test]
 fn a_translate_group_draws_its_copies_in_the_group_s_colours() {
     let r = loci(&["render", &data("translate_nd.slvs")]);
-    assert_eq!(r.status.code(), Some(0), "{}", String::from_utf8_lossy(&r.stderr));
+    assert_eq!(
+        r.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&r.stderr)
+    );
     let svg = String::from_utf8(r.stdout).unwrap();
     let doc = roxmltree::Document::parse(&svg).unwrap();
     // The copied lines are constants of loci's model joining the group's moving points:
@@ -199,7 +222,10 @@ fn a_translate_group_draws_its_copies_in_the_group_s_colours() {
     assert!(copies.len() >= 8, "{}", copies.len());
     for n in &copies {
         let class = n.attribute("class").unwrap();
-        assert!(class.contains(" free") || class.contains(" fixed"), "{class}");
+        assert!(
+            class.contains(" free") || class.contains(" fixed"),
+            "{class}"
+        );
     }
     // 3D without a workplane: drawn isometric, so the two translation axes show apart.
     assert!(!svg.contains("NaN"));

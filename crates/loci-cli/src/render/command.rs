@@ -18,12 +18,11 @@ pub(crate) fn run(
     group: Option<u32>,
     no_solve: bool,
 ) -> anyhow::Result<u8> {
-    let (sys, group, opts, diagnosis, outcome) =
-        if file.extension().is_some_and(|e| e == "slvs") {
-            from_slvs(file, group, no_solve)?
-        } else {
-            from_json(file, group, no_solve)?
-        };
+    let (sys, group, opts, diagnosis, outcome) = if file.extension().is_some_and(|e| e == "slvs") {
+        from_slvs(file, group, no_solve)?
+    } else {
+        from_json(file, group, no_solve)?
+    };
     let svg = render_svg(&sys, group, diagnosis.as_ref(), &opts);
     match output {
         Some(out) => std::fs::write(out, svg)
@@ -33,7 +32,13 @@ pub(crate) fn run(
     Ok(outcome.map_or(code::SOLVED, exit_code))
 }
 
-type Loaded = (System, GroupId, RenderOptions, Option<loci::Diagnosis>, Option<Outcome>);
+type Loaded = (
+    System,
+    GroupId,
+    RenderOptions,
+    Option<loci::Diagnosis>,
+    Option<Outcome>,
+);
 
 fn from_json(file: &Path, group: Option<u32>, no_solve: bool) -> anyhow::Result<Loaded> {
     let text = std::fs::read_to_string(file)
@@ -107,14 +112,16 @@ fn from_slvs(file: &Path, group: Option<u32>, no_solve: bool) -> anyhow::Result<
         }
     }
     let diagnosis = if solvable.contains(&g) && f.system.groups().contains(&g) {
-        Some(loci::diagnose(&f.system, g, &Config::default()).map_err(|e| {
-            anyhow::anyhow!(
-                "{}: Group.h.v={:08x}: {}",
-                file.display(),
-                g.0,
-                solve_message(&e)
-            )
-        })?)
+        Some(
+            loci::diagnose(&f.system, g, &Config::default()).map_err(|e| {
+                anyhow::anyhow!(
+                    "{}: Group.h.v={:08x}: {}",
+                    file.display(),
+                    g.0,
+                    solve_message(&e)
+                )
+            })?,
+        )
     } else {
         None
     };
@@ -148,8 +155,10 @@ fn from_slvs(file: &Path, group: Option<u32>, no_solve: bool) -> anyhow::Result<
 }
 
 fn file_name(file: &Path) -> String {
-    file.file_name()
-        .map_or_else(|| file.display().to_string(), |n| n.to_string_lossy().into_owned())
+    file.file_name().map_or_else(
+        || file.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
 }
 
 fn title(file: &Path, group: GroupId, d: &loci::Diagnosis) -> String {

@@ -7,7 +7,15 @@ use super::svg::{arrowhead, num, text_size, Svg};
 use super::view::P2;
 
 /// Writes `s` beside `anchor` on the side `dir` (a unit vector), clear of other labels.
-pub(crate) fn label(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, anchor: P2, dir: P2, s: &str, font: f64, ink: Ink) {
+pub(crate) fn label(
+    svg: &mut Svg,
+    ctx: &mut Ctx<'_, '_>,
+    anchor: P2,
+    dir: P2,
+    s: &str,
+    font: f64,
+    ink: Ink,
+) {
     let (w, h) = text_size(s, font);
     // Half the label's extent along `dir`, so that its near edge sits a few pixels out.
     let half = dir.x.abs() * w / 2.0 + dir.y.abs() * h / 2.0;
@@ -49,7 +57,14 @@ pub(crate) fn linear(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, a: P2, b: P2, text: &
 
 /// The distance from pixel point `p` to the line through `a` and `b`: a dimension along
 /// the perpendicular, with the line extended (dashed) to the foot when it falls outside.
-pub(crate) fn point_line(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, p: P2, (a, b): (P2, P2), text: &str, ink: Ink) {
+pub(crate) fn point_line(
+    svg: &mut Svg,
+    ctx: &mut Ctx<'_, '_>,
+    p: P2,
+    (a, b): (P2, P2),
+    text: &str,
+    ink: Ink,
+) {
     let Some(d) = b.minus(a).unit() else {
         label(svg, ctx, p, P2::new(0.0, -1.0), text, FONT, ink);
         return;
@@ -76,7 +91,15 @@ pub(crate) fn point_line(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, p: P2, (a, b): (P
 
 /// A radius (`diameter` false: from the centre out) or diameter (across) of the circle
 /// at pixel centre `c` with pixel radius `r`, drawn along `dir`.
-pub(crate) fn radial(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: P2, r: f64, dir: P2, diameter: bool, text: &str, ink: Ink) {
+pub(crate) fn radial(
+    svg: &mut Svg,
+    ctx: &mut Ctx<'_, '_>,
+    (c, r): (P2, f64),
+    dir: P2,
+    diameter: bool,
+    text: &str,
+    ink: Ink,
+) {
     let thin = style::thin(ink);
     let far = c.plus(dir.scale(r));
     if diameter {
@@ -121,7 +144,11 @@ pub(crate) fn angle(
     // whose angle matches the dimension.
     let toward = |p: P2, q: P2, d: P2| {
         let m = p.mid(q);
-        if m.minus(x).dot(d) >= 0.0 { d } else { d.scale(-1.0) }
+        if m.minus(x).dot(d) >= 0.0 {
+            d
+        } else {
+            d.scale(-1.0)
+        }
     };
     let (ra, rb) = (toward(a0, a1, da), toward(b0, b1, db));
     let target = degrees.to_radians();
@@ -180,7 +207,19 @@ pub(crate) fn angle(
         num(s1.x),
         num(s1.y)
     );
-    svg.path(&d, &[s0, s1, x.plus(u.plus(v).unit().unwrap_or(u).scale(radius))], &style::thin(ink));
+    svg.path(
+        &d,
+        &[s0, s1, x.plus(u.plus(v).unit().unwrap_or(u).scale(radius))],
+        &style::thin(ink),
+    );
     let bis = u.plus(v).unit().unwrap_or(u.perp());
-    label(svg, ctx, x.plus(bis.scale(radius + 2.0)), bis, text, FONT, ink);
+    label(
+        svg,
+        ctx,
+        x.plus(bis.scale(radius + 2.0)),
+        bis,
+        text,
+        FONT,
+        ink,
+    );
 }

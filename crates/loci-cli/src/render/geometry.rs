@@ -47,10 +47,7 @@ impl Shape {
         match self {
             Shape::Point(p) => vec![*p],
             Shape::Segment(a, b) => vec![*a, *b],
-            Shape::Circle { c, r } => vec![
-                P2::new(c.x - r, c.y - r),
-                P2::new(c.x + r, c.y + r),
-            ],
+            Shape::Circle { c, r } => vec![P2::new(c.x - r, c.y - r), P2::new(c.x + r, c.y + r)],
             Shape::Arc { c, r, a0, sweep } => {
                 let n = 64;
                 (0..=n)
@@ -126,8 +123,8 @@ pub(crate) fn collect(
         // The curves loci holds constant for a `.slvs` file's copies are drawn with the
         // points they join when those are all drawn: the copies this group or an earlier
         // one makes, not those of later groups.
-        let copy_of: Option<Vec<GroupId>> = (e.group == FIXED_GROUP && !shown(e.group))
-            .then(|| {
+        let copy_of: Option<Vec<GroupId>> =
+            (e.group == FIXED_GROUP && !shown(e.group)).then(|| {
                 e.kind
                     .references()
                     .iter()
@@ -138,7 +135,10 @@ pub(crate) fn collect(
             });
         let joins_current = match &copy_of {
             Some(groups) => {
-                if groups.is_empty() || !groups.iter().all(|g| shown(*g)) || groups.iter().all(|g| *g == FIXED_GROUP) {
+                if groups.is_empty()
+                    || !groups.iter().all(|g| shown(*g))
+                    || groups.iter().all(|g| *g == FIXED_GROUP)
+                {
                     continue;
                 }
                 groups.contains(&group)
@@ -187,9 +187,10 @@ pub(crate) fn shape(view: &View<'_>, h: EntityId) -> Option<Shape> {
         return view.point(h).map(Shape::Point);
     }
     match &e.kind {
-        EntityKind::LineSegment { points } => {
-            Some(Shape::Segment(view.point(points[0])?, view.point(points[1])?))
-        }
+        EntityKind::LineSegment { points } => Some(Shape::Segment(
+            view.point(points[0])?,
+            view.point(points[1])?,
+        )),
         EntityKind::Cubic { points } => Some(Shape::Cubic([
             view.point(points[0])?,
             view.point(points[1])?,
@@ -272,7 +273,8 @@ pub(crate) fn draw(svg: &mut Svg, items: &[Item], px: &ToPixels) {
     svg.open("id=\"geometry\"");
     for (points, earlier) in [(false, true), (false, false), (true, true), (true, false)] {
         for it in items {
-            if matches!(it.shape, Shape::Point(_)) == points && (it.ink == Ink::Earlier) == earlier {
+            if matches!(it.shape, Shape::Point(_)) == points && (it.ink == Ink::Earlier) == earlier
+            {
                 draw_item(svg, it, px);
             }
         }
@@ -330,7 +332,14 @@ fn draw_item(svg: &mut Svg, it: &Item, px: &ToPixels) {
             let d: Vec<String> = pts
                 .iter()
                 .enumerate()
-                .map(|(i, p)| format!("{}{} {}", if i == 0 { "M" } else { "L" }, num(p.x), num(p.y)))
+                .map(|(i, p)| {
+                    format!(
+                        "{}{} {}",
+                        if i == 0 { "M" } else { "L" },
+                        num(p.x),
+                        num(p.y)
+                    )
+                })
                 .collect();
             svg.path(&d.join(" "), &pts, &attrs);
         }

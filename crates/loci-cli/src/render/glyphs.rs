@@ -11,6 +11,9 @@ use super::view::{ToPixels, View, P2};
 use loci::{Constraint, ConstraintId, ConstraintKind as K, EntityId, EntityKind};
 use std::collections::BTreeMap;
 
+/// A circle or an arc in pixels: centre, radius, and for an arc its start angle and sweep.
+type Round = (P2, f64, Option<(f64, f64)>);
+
 /// What glyphs need: where things are, in pixels, and the labels placed so far.
 pub(crate) struct Ctx<'a, 'v> {
     pub view: &'a View<'v>,
@@ -38,7 +41,7 @@ impl Ctx<'_, '_> {
 
     /// A circle or arc: pixel centre, pixel radius, and for an arc its start angle and
     /// counter-clockwise sweep (y up).
-    fn round(&self, h: Option<EntityId>) -> Option<(P2, f64, Option<(f64, f64)>)> {
+    fn round(&self, h: Option<EntityId>) -> Option<Round> {
         let h = h?;
         let centre = match &self.view.sys.entity(h)?.kind {
             EntityKind::Circle { center, .. } | EntityKind::ArcOfCircle { center, .. } => *center,
@@ -181,15 +184,18 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
             if let Some((centre, r, arc)) = ctx.round(c.entity_a) {
                 match arc {
                     None => {
-                        let d = P2::new(std::f64::consts::FRAC_1_SQRT_2, -std::f64::consts::FRAC_1_SQRT_2);
+                        let d = P2::new(
+                            std::f64::consts::FRAC_1_SQRT_2,
+                            -std::f64::consts::FRAC_1_SQRT_2,
+                        );
                         let t = dim_text(ctx, c, |v| format!("⌀{}", value(v)));
-                        radial(svg, ctx, centre, r, d, true, &t, ink);
+                        radial(svg, ctx, (centre, r), d, true, &t, ink);
                     }
                     Some((a0, s)) => {
                         let m = a0 + s / 2.0;
                         let d = P2::new(m.cos(), -m.sin());
                         let t = dim_text(ctx, c, |v| format!("R{}", value(v / 2.0)));
-                        radial(svg, ctx, centre, r, d, false, &t, ink);
+                        radial(svg, ctx, (centre, r), d, false, &t, ink);
                     }
                 }
             }
@@ -214,7 +220,11 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
             let at = match (ctx.line(c.entity_a), ctx.pt(c.pt_a), ctx.pt(c.pt_b)) {
                 (Some(l), _, _) => Some(l),
                 (None, Some(a), Some(b)) => {
-                    svg.line(a, b, &format!("{thin} stroke-dasharray=\"{}\"", style::HELPER_DASH));
+                    svg.line(
+                        a,
+                        b,
+                        &format!("{thin} stroke-dasharray=\"{}\"", style::HELPER_DASH),
+                    );
                     Some((a, b))
                 }
                 _ => None,
@@ -227,7 +237,14 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
         }
         K::PointsCoincident => {
             if let Some(p) = ctx.pt(c.pt_a).or(ctx.pt(c.pt_b)) {
-                svg.circle(p, 6.0, &format!("fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"", ink.colour()));
+                svg.circle(
+                    p,
+                    6.0,
+                    &format!(
+                        "fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"",
+                        ink.colour()
+                    ),
+                );
             }
         }
         K::PtOnLine | K::PtOnCircle | K::PtInPlane | K::PtOnFace => {
@@ -240,12 +257,18 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
                         P2::new(p.x + s, p.y + s),
                         P2::new(p.x - s, p.y + s),
                     ],
-                    &format!("fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\"", ink.colour()),
+                    &format!(
+                        "fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\"",
+                        ink.colour()
+                    ),
                 );
             }
         }
         K::AtMidpoint => {
-            if let Some(p) = ctx.pt(c.pt_a).or_else(|| ctx.line(c.entity_a).map(|(a, b)| a.mid(b))) {
+            if let Some(p) = ctx
+                .pt(c.pt_a)
+                .or_else(|| ctx.line(c.entity_a).map(|(a, b)| a.mid(b)))
+            {
                 let s = 6.5;
                 svg.polygon(
                     &[
@@ -254,7 +277,10 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
                         P2::new(p.x, p.y + s),
                         P2::new(p.x - s, p.y),
                     ],
-                    &format!("fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\"", ink.colour()),
+                    &format!(
+                        "fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\"",
+                        ink.colour()
+                    ),
                 );
             }
         }
@@ -263,12 +289,20 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
                 // A ground symbol under the point: it stays where it is.
                 let top = p.plus(P2::new(0.0, 4.0));
                 svg.polygon(
-                    &[top, top.plus(P2::new(6.0, 8.0)), top.plus(P2::new(-6.0, 8.0))],
+                    &[
+                        top,
+                        top.plus(P2::new(6.0, 8.0)),
+                        top.plus(P2::new(-6.0, 8.0)),
+                    ],
                     &style::filled(ink),
                 );
             }
         }
-        K::Parallel | K::Perpendicular | K::EqualLengthLines | K::EqualLineArcLen | K::EqualRadius => {
+        K::Parallel
+        | K::Perpendicular
+        | K::EqualLengthLines
+        | K::EqualLineArcLen
+        | K::EqualRadius => {
             let s = match c.kind {
                 K::Parallel => "∥",
                 K::Perpendicular => "⊥",
@@ -298,7 +332,10 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
                     // Arrowheads at both points, pointing at the mirror between them.
                     let fill = style::filled(ink);
                     svg.polygon(&super::svg::arrowhead(a.plus(u.scale(14.0)), u, 8.0), &fill);
-                    svg.polygon(&super::svg::arrowhead(b.minus(u.scale(14.0)), u.scale(-1.0), 8.0), &fill);
+                    svg.polygon(
+                        &super::svg::arrowhead(b.minus(u.scale(14.0)), u.scale(-1.0), 8.0),
+                        &fill,
+                    );
                 }
             }
         }

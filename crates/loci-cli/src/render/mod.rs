@@ -86,8 +86,16 @@ pub fn render_svg(
         lo = P2::new(0.0, 0.0);
         hi = lo;
     }
-    let width = if opts.width.is_finite() && opts.width > 1.0 { opts.width } else { 640.0 };
-    let height = if opts.height.is_finite() && opts.height > 1.0 { opts.height } else { 480.0 };
+    let width = if opts.width.is_finite() && opts.width > 1.0 {
+        opts.width
+    } else {
+        640.0
+    };
+    let height = if opts.height.is_finite() && opts.height > 1.0 {
+        opts.height
+    } else {
+        480.0
+    };
     let px = ToPixels::fit(lo, hi, width, height);
 
     let mut svg = Svg::default();
@@ -162,20 +170,41 @@ pub fn render_svg(
         let mut entries = Vec::new();
         let has = |ink: Ink| items.iter().any(|it| it.ink == ink);
         if diagnosis.is_some() {
-            entries.push(Entry { ink: Ink::Fixed, construction: false });
-            entries.push(Entry { ink: Ink::Free, construction: false });
+            entries.push(Entry {
+                ink: Ink::Fixed,
+                construction: false,
+            });
+            entries.push(Entry {
+                ink: Ink::Free,
+                construction: false,
+            });
         } else {
-            entries.push(Entry { ink: Ink::Plain, construction: false });
+            entries.push(Entry {
+                ink: Ink::Plain,
+                construction: false,
+            });
         }
         if has(Ink::Earlier) {
-            entries.push(Entry { ink: Ink::Earlier, construction: false });
+            entries.push(Entry {
+                ink: Ink::Earlier,
+                construction: false,
+            });
         }
         if items.iter().any(|it| it.construction) {
-            entries.push(Entry { ink: Ink::Plain, construction: true });
+            entries.push(Entry {
+                ink: Ink::Plain,
+                construction: true,
+            });
         }
-        entries.push(Entry { ink: Ink::Glyph, construction: false });
+        entries.push(Entry {
+            ink: Ink::Glyph,
+            construction: false,
+        });
         if !conflicts.is_empty() || has(Ink::Conflict) {
-            entries.push(Entry { ink: Ink::Conflict, construction: false });
+            entries.push(Entry {
+                ink: Ink::Conflict,
+                construction: false,
+            });
         }
         let at = svg
             .bounds
@@ -184,7 +213,11 @@ pub fn render_svg(
         style::legend(&mut svg, at, &title, &entries);
     }
 
-    let m = if opts.margin.is_finite() && opts.margin >= 0.0 { opts.margin } else { 16.0 };
+    let m = if opts.margin.is_finite() && opts.margin >= 0.0 {
+        opts.margin
+    } else {
+        16.0
+    };
     let r = svg.bounds.rect.unwrap_or(svg::Rect {
         lo: P2::new(0.0, 0.0),
         hi: P2::new(1.0, 1.0),

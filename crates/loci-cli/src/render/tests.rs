@@ -29,7 +29,9 @@ fn draw(sys: &mut System, group: GroupId, opts: &RenderOptions) -> (String, loci
 }
 
 /// The elements drawn for entities: (handle, tag, class, attributes by name).
-fn entity_elements<'a, 'i>(doc: &'a roxmltree::Document<'i>) -> Vec<(u32, String, String, roxmltree::Node<'a, 'i>)> {
+fn entity_elements<'a, 'i>(
+    doc: &'a roxmltree::Document<'i>,
+) -> Vec<(u32, String, String, roxmltree::Node<'a, 'i>)> {
     doc.descendants()
         .filter_map(|n| {
             let h = n.attribute("data-entity")?.parse().ok()?;
@@ -156,7 +158,11 @@ fn conflicting_constraints_are_red_and_the_others_are_not() {
         if conflict.contains(&h) {
             seen.insert(h);
             assert!(class.contains("conflict"), "{h}: {class}");
-            assert_eq!(inks, BTreeSet::from([Ink::Conflict.colour().to_string()]), "{h}");
+            assert_eq!(
+                inks,
+                BTreeSet::from([Ink::Conflict.colour().to_string()]),
+                "{h}"
+            );
         } else {
             assert!(!class.contains("conflict"), "{h}: {class}");
             assert!(!inks.contains(Ink::Conflict.colour()), "{h}: {inks:?}");
@@ -222,7 +228,11 @@ fn every_drawable_entity_is_drawn_once_with_its_shape() {
 
 #[test]
 fn the_view_box_holds_everything_drawn() {
-    for name in ["triangle.json", "slot_mechanism.json", "tetrahedron_3d.json"] {
+    for name in [
+        "triangle.json",
+        "slot_mechanism.json",
+        "tetrahedron_3d.json",
+    ] {
         let (mut sys, g) = example(name);
         let (svg, _) = draw(&mut sys, g, &RenderOptions::default());
         let doc = roxmltree::Document::parse(&svg).unwrap();
@@ -234,11 +244,17 @@ fn the_view_box_holds_everything_drawn() {
             .map(|v| v.parse().unwrap())
             .collect();
         let inside = |x: f64, y: f64| {
-            x >= vb[0] - 0.01 && x <= vb[0] + vb[2] + 0.01 && y >= vb[1] - 0.01 && y <= vb[1] + vb[3] + 0.01
+            x >= vb[0] - 0.01
+                && x <= vb[0] + vb[2] + 0.01
+                && y >= vb[1] - 0.01
+                && y <= vb[1] + vb[3] + 0.01
         };
         for n in doc.descendants().filter(|n| n.tag_name().name() == "line") {
             let a = |k: &str| n.attribute(k).unwrap().parse::<f64>().unwrap();
-            assert!(inside(a("x1"), a("y1")) && inside(a("x2"), a("y2")), "{name}: {n:?}");
+            assert!(
+                inside(a("x1"), a("y1")) && inside(a("x2"), a("y2")),
+                "{name}: {n:?}"
+            );
         }
         for n in doc.descendants().filter(|n| n.tag_name().name() == "text") {
             let a = |k: &str| n.attribute(k).unwrap().parse::<f64>().unwrap();
@@ -250,20 +266,34 @@ fn the_view_box_holds_everything_drawn() {
 /// A system with no workplane: 3D points and lines off the xy plane, drawn isometric.
 fn tripod() -> System {
     let mut sys = System::new();
-    let coords = [[0.0, 0.0, 0.0], [10.0, 0.0, 0.0], [0.0, 10.0, 0.0], [0.0, 0.0, 10.0]];
+    let coords = [
+        [0.0, 0.0, 0.0],
+        [10.0, 0.0, 0.0],
+        [0.0, 10.0, 0.0],
+        [0.0, 0.0, 10.0],
+    ];
     for (i, c) in coords.iter().enumerate() {
         let base = 10 * i as u32 + 1;
         for (k, v) in c.iter().enumerate() {
             sys.add_param(Param::new(base + k as u32, 2, *v)).unwrap();
         }
-        sys.add_entity(Entity::point_3d(100 + i as u32, 2, [base, base + 1, base + 2]))
-            .unwrap();
+        sys.add_entity(Entity::point_3d(
+            100 + i as u32,
+            2,
+            [base, base + 1, base + 2],
+        ))
+        .unwrap();
     }
     for i in 1..4 {
-        sys.add_entity(Entity::line(200 + i, 2, None, 100, 100 + i)).unwrap();
+        sys.add_entity(Entity::line(200 + i, 2, None, 100, 100 + i))
+            .unwrap();
     }
-    sys.add_constraint(Constraint::new(1, 2, K::PtPtDistance).with_points(100, 101).with_val(10.0))
-        .unwrap();
+    sys.add_constraint(
+        Constraint::new(1, 2, K::PtPtDistance)
+            .with_points(100, 101)
+            .with_val(10.0),
+    )
+    .unwrap();
     sys
 }
 
@@ -295,33 +325,66 @@ fn a_sketch_in_3d_is_drawn_isometric_with_finite_numbers() {
 fn degenerate_sketches_draw_without_panics_or_nan() {
     // Everything at one point, a zero radius, a group with nothing in it.
     let mut sys = System::new();
-    for (h, v) in [(1, 0.0), (2, 0.0), (3, 0.0), (4, 1.0), (5, 0.0), (6, 0.0), (7, 0.0)] {
+    for (h, v) in [
+        (1, 0.0),
+        (2, 0.0),
+        (3, 0.0),
+        (4, 1.0),
+        (5, 0.0),
+        (6, 0.0),
+        (7, 0.0),
+    ] {
         sys.add_param(Param::new(h, 1, v)).unwrap();
     }
     sys.add_entity(Entity::point_3d(101, 1, [1, 2, 3])).unwrap();
-    sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7])).unwrap();
+    sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7]))
+        .unwrap();
     sys.add_entity(Entity::workplane(200, 1, 101, 102)).unwrap();
     for h in 11..=17 {
         sys.add_param(Param::new(h, 2, 0.0)).unwrap();
     }
-    sys.add_entity(Entity::point_2d(301, 2, 200, [11, 12])).unwrap();
-    sys.add_entity(Entity::point_2d(302, 2, 200, [13, 14])).unwrap();
-    sys.add_entity(Entity::point_2d(303, 2, 200, [15, 16])).unwrap();
-    sys.add_entity(Entity::line(304, 2, Some(200), 301, 302)).unwrap();
-    sys.add_entity(Entity::normal_2d(305, 2, 200)).unwrap();
-    sys.add_entity(Entity::distance(306, 2, Some(200), 17)).unwrap();
-    sys.add_entity(Entity::circle(307, 2, Some(200), 303, 305, 306)).unwrap();
-    sys.add_entity(Entity::arc(308, 2, 200, 305, 301, 302, 303)).unwrap();
-    sys.add_constraint(Constraint::new(1, 2, K::PtPtDistance).in_workplane(Some(200)).with_points(301, 302))
+    sys.add_entity(Entity::point_2d(301, 2, 200, [11, 12]))
         .unwrap();
+    sys.add_entity(Entity::point_2d(302, 2, 200, [13, 14]))
+        .unwrap();
+    sys.add_entity(Entity::point_2d(303, 2, 200, [15, 16]))
+        .unwrap();
+    sys.add_entity(Entity::line(304, 2, Some(200), 301, 302))
+        .unwrap();
+    sys.add_entity(Entity::normal_2d(305, 2, 200)).unwrap();
+    sys.add_entity(Entity::distance(306, 2, Some(200), 17))
+        .unwrap();
+    sys.add_entity(Entity::circle(307, 2, Some(200), 303, 305, 306))
+        .unwrap();
+    sys.add_entity(Entity::arc(308, 2, 200, 305, 301, 302, 303))
+        .unwrap();
+    sys.add_constraint(
+        Constraint::new(1, 2, K::PtPtDistance)
+            .in_workplane(Some(200))
+            .with_points(301, 302),
+    )
+    .unwrap();
     sys.add_constraint(Constraint::new(2, 2, K::Diameter).with_entities([307, 0, 0, 0]))
         .unwrap();
-    sys.add_constraint(Constraint::new(3, 2, K::Angle).in_workplane(Some(200)).with_entities([304, 304, 0, 0]).with_val(0.0))
-        .unwrap();
-    sys.add_constraint(Constraint::new(4, 2, K::PtLineDistance).in_workplane(Some(200)).with_points(303, 0).with_entities([304, 0, 0, 0]))
-        .unwrap();
+    sys.add_constraint(
+        Constraint::new(3, 2, K::Angle)
+            .in_workplane(Some(200))
+            .with_entities([304, 304, 0, 0])
+            .with_val(0.0),
+    )
+    .unwrap();
+    sys.add_constraint(
+        Constraint::new(4, 2, K::PtLineDistance)
+            .in_workplane(Some(200))
+            .with_points(303, 0)
+            .with_entities([304, 0, 0, 0]),
+    )
+    .unwrap();
     for group in [GroupId(2), GroupId(1), GroupId(9)] {
-        for d in [None, loci::diagnose(&sys, GroupId(2), &Config::default()).ok()] {
+        for d in [
+            None,
+            loci::diagnose(&sys, GroupId(2), &Config::default()).ok(),
+        ] {
             let svg = render_svg(&sys, group, d.as_ref(), &RenderOptions::default());
             assert!(!svg.contains("NaN") && !svg.contains("inf"), "{svg}");
             roxmltree::Document::parse(&svg).unwrap();

@@ -234,7 +234,9 @@ impl<'a> View<'a> {
     /// Samples the circle about model point `c` with radius `r` in the plane of `axes`
     /// from angle `a0` over `sweep` (radians), projected.
     pub(crate) fn sample(&self, c: V3, r: f64, axes: &Frame, a0: f64, sweep: f64) -> Vec<P2> {
-        let n = ((sweep.abs() / (2.0 * std::f64::consts::PI)) * 96.0).ceil().max(8.0) as usize;
+        let n = ((sweep.abs() / (2.0 * std::f64::consts::PI)) * 96.0)
+            .ceil()
+            .max(8.0) as usize;
         (0..=n)
             .map(|i| {
                 let t = a0 + sweep * i as f64 / n as f64;
@@ -303,8 +305,16 @@ impl ToPixels {
     /// Fits the box `lo`..`hi` (drawing plane) into `width` × `height` pixels.
     pub(crate) fn fit(lo: P2, hi: P2, width: f64, height: f64) -> Self {
         let (dx, dy) = (hi.x - lo.x, hi.y - lo.y);
-        let sx = if dx > 1e-12 { width / dx } else { f64::INFINITY };
-        let sy = if dy > 1e-12 { height / dy } else { f64::INFINITY };
+        let sx = if dx > 1e-12 {
+            width / dx
+        } else {
+            f64::INFINITY
+        };
+        let sy = if dy > 1e-12 {
+            height / dy
+        } else {
+            f64::INFINITY
+        };
         let mut scale = sx.min(sy);
         if !scale.is_finite() {
             // A single point (or nothing): any scale; centre it.

@@ -51,8 +51,8 @@ pub use load::FIXED_GROUP;
 pub use solve::{solve_all, GroupResult, GroupSolve};
 
 use crate::model::{EntityId, GroupId, ObjectId, ParamId, System};
-use std::collections::BTreeSet;
 use crate::{ModelError, SolveError};
+use std::collections::BTreeSet;
 use std::fmt;
 
 /// A loaded `.slvs` file: loci's model of it, its groups in solve order, and the original
