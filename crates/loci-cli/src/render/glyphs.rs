@@ -207,9 +207,10 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
                 } else {
                     c.val
                 };
-                let shown = if c.other { 180.0 - v } else { v };
+                // The arc spans the angle the label states: of the four pairs of rays, the
+                // one that makes `v` (`other` only says which directions the lines have).
                 let t = dim_text(ctx, c, |v| format!("{}°", value(v)));
-                angle(svg, ctx, a, b, shown, &t, ink);
+                angle(svg, ctx, a, b, v, &t, ink);
             } else if let Some((p, d)) = ctx.anchor(c.entity_a) {
                 let t = dim_text(ctx, c, |v| format!("∠{}°", value(v)));
                 label(svg, ctx, p, d, &t, FONT, ink);

@@ -391,3 +391,100 @@ fn degenerate_sketches_draw_without_panics_or_nan() {
         }
     }
 }
+
+/// Two lines from the origin at 0° and 60°, with an angle dimension of `degrees`
+/// (supplementary with `other`).
+fn vee(degrees: f64, other: bool) -> System {
+    let mut sys = System::new();
+    for (h, v) in [
+        (1, 0.0),
+        (2, 0.0),
+        (3, 0.0),
+        (4, 1.0),
+        (5, 0.0),
+        (6, 0.0),
+        (7, 0.0),
+    ] {
+        sys.add_param(Param::new(h, 1, v)).unwrap();
+    }
+    sys.add_entity(Entity::point_3d(101, 1, [1, 2, 3])).unwrap();
+    sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7]))
+        .unwrap();
+    sys.add_entity(Entity::workplane(200, 1, 101, 102)).unwrap();
+    let (c, s) = (60f64.to_radians().cos(), 60f64.to_radians().sin());
+    for (h, v) in [
+        (11, 0.0),
+        (12, 0.0),
+        (13, 50.0),
+        (14, 0.0),
+        (15, 50.0 * c),
+        (16, 50.0 * s),
+    ] {
+        sys.add_param(Param::new(h, 2, v)).unwrap();
+    }
+    sys.add_entity(Entity::point_2d(301, 2, 200, [11, 12]))
+        .unwrap();
+    sys.add_entity(Entity::point_2d(302, 2, 200, [13, 14]))
+        .unwrap();
+    sys.add_entity(Entity::point_2d(303, 2, 200, [15, 16]))
+        .unwrap();
+    sys.add_entity(Entity::line(304, 2, Some(200), 301, 302))
+        .unwrap();
+    sys.add_entity(Entity::line(305, 2, Some(200), 301, 303))
+        .unwrap();
+    sys.add_constraint(
+        Constraint::new(1, 2, K::Angle)
+            .in_workplane(Some(200))
+            .with_entities([304, 305, 0, 0])
+            .with_val(degrees)
+            .with_flags(other, false),
+    )
+    .unwrap();
+    sys
+}
+
+#[test]
+fn an_angle_arc_spans_the_angle_its_label_states() {
+    for (degrees, other) in [(60.0, false), (120.0, false), (60.0, true), (120.0, true)] {
+        let sys = vee(degrees, other);
+        let svg = render_svg(&sys, GroupId(2), None, &RenderOptions::default());
+        let doc = roxmltree::Document::parse(&svg).unwrap();
+        let at = |h: &str, k: &str| -> f64 {
+            doc.descendants()
+                .find(|n| n.attribute("data-entity") == Some(h))
+                .and_then(|n| n.attribute(k))
+                .unwrap()
+                .parse()
+                .unwrap()
+        };
+        let vertex = (at("301", "cx"), at("301", "cy"));
+        let glyph = doc
+            .descendants()
+            .find(|n| n.attribute("data-constraint") == Some("1"))
+            .unwrap();
+        let d = glyph
+            .descendants()
+            .find(|n| n.tag_name().name() == "path")
+            .and_then(|n| n.attribute("d"))
+            .unwrap();
+        // "Mx0 y0 AR R 0 0 s x1 y1"
+        let nums: Vec<f64> = d
+            .replace(['M', 'A'], " ")
+            .split_whitespace()
+            .map(|v| v.parse().unwrap())
+            .collect();
+        let (p0, p1) = ((nums[0], nums[1]), (nums[7], nums[8]));
+        let a0 = (p0.1 - vertex.1).atan2(p0.0 - vertex.0);
+        let a1 = (p1.1 - vertex.1).atan2(p1.0 - vertex.0);
+        let mut between = (a1 - a0).abs().to_degrees();
+        if between > 180.0 {
+            between = 360.0 - between;
+        }
+        assert!(
+            (between - degrees).abs() < 0.5,
+            "{degrees}: {between} ({d})"
+        );
+        let label = format!(">{degrees}°<");
+        assert!(svg.contains(&label), "{label}");
+    }
+}
