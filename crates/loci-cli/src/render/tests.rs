@@ -488,3 +488,27 @@ fn an_angle_arc_spans_the_angle_its_label_states() {
         assert!(svg.contains(&label), "{label}");
     }
 }
+
+#[test]
+fn a_reference_dimension_shows_what_it_measures_in_parentheses() {
+    let (mut sys, g) = example("triangle.json");
+    // A driven dimension across the hypotenuse: it measures 50 and constrains nothing.
+    sys.add_constraint(
+        Constraint::new(90, 2, K::PtPtDistance)
+            .in_workplane(Some(200))
+            .with_points(303, 301)
+            .with_val(7.0)
+            .as_reference(),
+    )
+    .unwrap();
+    let (svg, d) = draw(&mut sys, g, &RenderOptions::default());
+    assert_eq!(d.dof, 0);
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let glyph = doc
+        .descendants()
+        .find(|n| n.attribute("data-constraint") == Some("90"))
+        .unwrap();
+    assert!(glyph.attribute("class").unwrap().contains("reference"));
+    let text: Vec<&str> = glyph.descendants().filter_map(|n| n.text()).collect();
+    assert!(text.contains(&"(50)"), "{text:?}");
+}
