@@ -238,65 +238,25 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
         }
         K::PointsCoincident => {
             if let Some(p) = ctx.pt(c.pt_a).or(ctx.pt(c.pt_b)) {
-                svg.circle(
-                    p,
-                    6.0,
-                    &format!(
-                        "fill=\"none\" stroke=\"{}\" stroke-width=\"1.5\"",
-                        ink.colour()
-                    ),
-                );
+                mark(svg, p, Mark::Coincident, ink);
             }
         }
         K::PtOnLine | K::PtOnCircle | K::PtInPlane | K::PtOnFace => {
             if let Some(p) = ctx.pt(c.pt_a) {
-                let s = 5.0;
-                svg.polygon(
-                    &[
-                        P2::new(p.x - s, p.y - s),
-                        P2::new(p.x + s, p.y - s),
-                        P2::new(p.x + s, p.y + s),
-                        P2::new(p.x - s, p.y + s),
-                    ],
-                    &format!(
-                        "fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\"",
-                        ink.colour()
-                    ),
-                );
+                mark(svg, p, Mark::OnCurve, ink);
             }
         }
         K::AtMidpoint => {
-            if let Some(p) = ctx
+            let at = ctx
                 .pt(c.pt_a)
-                .or_else(|| ctx.line(c.entity_a).map(|(a, b)| a.mid(b)))
-            {
-                let s = 6.5;
-                svg.polygon(
-                    &[
-                        P2::new(p.x, p.y - s),
-                        P2::new(p.x + s, p.y),
-                        P2::new(p.x, p.y + s),
-                        P2::new(p.x - s, p.y),
-                    ],
-                    &format!(
-                        "fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\"",
-                        ink.colour()
-                    ),
-                );
+                .or_else(|| ctx.line(c.entity_a).map(|(a, b)| a.mid(b)));
+            if let Some(p) = at {
+                mark(svg, p, Mark::Midpoint, ink);
             }
         }
         K::WhereDragged => {
             if let Some(p) = ctx.pt(c.pt_a) {
-                // A ground symbol under the point: it stays where it is.
-                let top = p.plus(P2::new(0.0, 4.0));
-                svg.polygon(
-                    &[
-                        top,
-                        top.plus(P2::new(6.0, 8.0)),
-                        top.plus(P2::new(-6.0, 8.0)),
-                    ],
-                    &style::filled(ink),
-                );
+                mark(svg, p, Mark::Dragged, ink);
             }
         }
         K::Parallel
@@ -366,4 +326,86 @@ fn draw_kind(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, c: &Constraint, ink: Ink) {
 /// A short marker text beside `at`.
 fn marker(svg: &mut Svg, ctx: &mut Ctx<'_, '_>, at: P2, dir: P2, s: &str, ink: Ink) {
     label(svg, ctx, at.plus(dir.scale(3.0)), dir, s, SMALL_FONT, ink);
+}
+
+/// The markers drawn on a point, which the legend explains.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) enum Mark {
+    /// A ring: points coincident.
+    Coincident,
+    /// A square: a point on a line, circle, arc, plane or face.
+    OnCurve,
+    /// A diamond: a point at a line's midpoint.
+    Midpoint,
+    /// A ground triangle under the point: it stays where it is.
+    Dragged,
+}
+
+impl Mark {
+    /// The marker of constraint kind `k`, if it draws one.
+    pub(crate) fn of(k: K) -> Option<Mark> {
+        match k {
+            K::PointsCoincident => Some(Mark::Coincident),
+            K::PtOnLine | K::PtOnCircle | K::PtInPlane | K::PtOnFace => Some(Mark::OnCurve),
+            K::AtMidpoint => Some(Mark::Midpoint),
+            K::WhereDragged => Some(Mark::Dragged),
+            _ => None,
+        }
+    }
+
+    /// Words for the legend.
+    pub(crate) fn describe(self) -> &'static str {
+        match self {
+            Mark::Coincident => "coincident",
+            Mark::OnCurve => "point on",
+            Mark::Midpoint => "midpoint",
+            Mark::Dragged => "stays put",
+        }
+    }
+}
+
+/// Draws marker `m` on the point at `p` (pixels).
+pub(crate) fn mark(svg: &mut Svg, p: P2, m: Mark, ink: Ink) {
+    let outline = format!(
+        "fill=\"none\" stroke=\"{}\" stroke-width=\"1.3\"",
+        ink.colour()
+    );
+    match m {
+        Mark::Coincident => svg.circle(p, 6.0, &outline),
+        Mark::OnCurve => {
+            let s = 5.0;
+            svg.polygon(
+                &[
+                    P2::new(p.x - s, p.y - s),
+                    P2::new(p.x + s, p.y - s),
+                    P2::new(p.x + s, p.y + s),
+                    P2::new(p.x - s, p.y + s),
+                ],
+                &outline,
+            );
+        }
+        Mark::Midpoint => {
+            let s = 6.5;
+            svg.polygon(
+                &[
+                    P2::new(p.x, p.y - s),
+                    P2::new(p.x + s, p.y),
+                    P2::new(p.x, p.y + s),
+                    P2::new(p.x - s, p.y),
+                ],
+                &outline,
+            );
+        }
+        Mark::Dragged => {
+            let top = p.plus(P2::new(0.0, 4.0));
+            svg.polygon(
+                &[
+                    top,
+                    top.plus(P2::new(6.0, 8.0)),
+                    top.plus(P2::new(-6.0, 8.0)),
+                ],
+                &style::filled(ink),
+            );
+        }
+    }
 }

@@ -210,7 +210,14 @@ pub fn render_svg(
             .bounds
             .rect
             .map_or(P2::new(0.0, 0.0), |r| P2::new(r.lo.x, r.hi.y + 18.0));
-        style::legend(&mut svg, at, &title, &entries);
+        let marks: BTreeSet<glyphs::Mark> = sys
+            .constraints()
+            .iter()
+            .filter(|c| c.group == group)
+            .filter_map(|c| glyphs::Mark::of(c.kind))
+            .collect();
+        let marks: Vec<glyphs::Mark> = marks.into_iter().collect();
+        style::legend(&mut svg, at, &title, &entries, &marks);
     }
 
     let m = if opts.margin.is_finite() && opts.margin >= 0.0 {

@@ -1,5 +1,6 @@
 //! Colours, line styles and the legend that explains them.
 
+use super::glyphs::Mark;
 use super::svg::Svg;
 use super::view::P2;
 
@@ -114,7 +115,8 @@ pub(crate) struct Entry {
 
 /// Draws the legend in one row with its top left corner at `at`, after `title` on a row
 /// of its own. Returns nothing; the extent goes into `svg`'s bounds.
-pub(crate) fn legend(svg: &mut Svg, at: P2, title: &str, entries: &[Entry]) {
+/// The point markers present get a second row.
+pub(crate) fn legend(svg: &mut Svg, at: P2, title: &str, entries: &[Entry], marks: &[Mark]) {
     svg.open("id=\"legend\" font-family=\"sans-serif\"");
     let mut y = at.y + FONT / 2.0;
     if !title.is_empty() {
@@ -140,6 +142,16 @@ pub(crate) fn legend(svg: &mut Svg, at: P2, title: &str, entries: &[Entry]) {
         x += 30.0;
         svg.text_left(P2::new(x, y), label, SMALL_FONT, &text(Ink::Plain));
         x += super::svg::text_size(label, SMALL_FONT).0 + 18.0;
+    }
+    let mut x = at.x;
+    let y = y + SMALL_FONT + 10.0;
+    for m in marks {
+        // The ground triangle hangs below its point: lift it onto the row.
+        let lift = if *m == Mark::Dragged { 8.0 } else { 0.0 };
+        super::glyphs::mark(svg, P2::new(x + 12.0, y - lift), *m, Ink::Glyph);
+        x += 30.0;
+        svg.text_left(P2::new(x, y), m.describe(), SMALL_FONT, &text(Ink::Plain));
+        x += super::svg::text_size(m.describe(), SMALL_FONT).0 + 18.0;
     }
     svg.close();
 }
