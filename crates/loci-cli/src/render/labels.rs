@@ -2,17 +2,50 @@
 
 use super::svg::{text_size, Rect};
 use super::view::P2;
+use std::collections::HashMap;
 
-/// The boxes already taken, in pixels.
+/// The side of the grid cells that index the taken boxes, in pixels.
+const CELL: f64 = 32.0;
+
+/// The boxes already taken, in pixels, indexed by a grid so that a sketch with thousands
+/// of labels places each in time independent of the others.
 #[derive(Default)]
 pub(crate) struct Labels {
     taken: Vec<Rect>,
+    /// Grid cell -> the boxes that reach into it. Only looked up, never iterated, so the
+    /// output does not depend on its order.
+    grid: HashMap<(i64, i64), Vec<usize>>,
+}
+
+fn cells(r: &Rect) -> impl Iterator<Item = (i64, i64)> {
+    let c = |v: f64| (v / CELL).floor().clamp(-1e9, 1e9) as i64;
+    let (x0, x1, y0, y1) = (c(r.lo.x), c(r.hi.x), c(r.lo.y), c(r.hi.y));
+    (x0..=x1).flat_map(move |x| (y0..=y1).map(move |y| (x, y)))
 }
 
 impl Labels {
+    fn take(&mut self, r: Rect) {
+        if !(r.lo.is_finite() && r.hi.is_finite()) {
+            return;
+        }
+        let i = self.taken.len();
+        self.taken.push(r);
+        for k in cells(&r) {
+            self.grid.entry(k).or_default().push(i);
+        }
+    }
+
+    fn is_free(&self, r: &Rect) -> bool {
+        cells(r).all(|k| {
+            self.grid
+                .get(&k)
+                .is_none_or(|v| v.iter().all(|&i| !self.taken[i].overlaps(r)))
+        })
+    }
+
     /// Marks a small box around `p` (a point of the geometry) as taken.
     pub(crate) fn block(&mut self, p: P2, size: f64) {
-        self.taken.push(Rect::centred(p, size, size));
+        self.take(Rect::centred(p, size, size));
     }
 
     /// Where to centre label `s` (font size `font`): at `want`, or the nearest free place
@@ -28,15 +61,14 @@ impl Labels {
             for &sign in offsets {
                 for d in [dir, across] {
                     let c = want.plus(d.scale(sign * step * f64::from(k)));
-                    let r = Rect::centred(c, w + 2.0, h + 2.0);
-                    if !self.taken.iter().any(|t| t.overlaps(&r)) {
+                    if self.is_free(&Rect::centred(c, w + 2.0, h + 2.0)) {
                         chosen = c;
                         break 'search;
                     }
                 }
             }
         }
-        self.taken.push(Rect::centred(chosen, w + 2.0, h + 2.0));
+        self.take(Rect::centred(chosen, w + 2.0, h + 2.0));
         chosen
     }
 }
@@ -52,5 +84,18 @@ mod tests {
         let b = l.place(P2::new(0.0, 0.0), P2::new(0.0, 1.0), "40", 13.0);
         assert_eq!(a, P2::new(0.0, 0.0));
         assert!((b.y - a.y).abs() >= 13.0, "{b:?}");
+    }
+
+    #[test]
+    fn a_label_keeps_off_a_blocked_point_across_cells() {
+        let mut l = Labels::default();
+        // A point on a cell corner blocks labels in all four cells.
+        l.block(P2::new(CELL, CELL), 8.0);
+        let a = l.place(P2::new(CELL, CELL), P2::new(1.0, 0.0), "8", 13.0);
+        let r = Rect::centred(a, 8.0, 13.0);
+        assert!(
+            !r.overlaps(&Rect::centred(P2::new(CELL, CELL), 8.0, 8.0)),
+            "{a:?}"
+        );
     }
 }
