@@ -16,6 +16,7 @@ macro_rules! outln {
 
 mod check;
 mod conformance;
+mod render;
 mod report;
 mod slvs;
 
@@ -76,6 +77,23 @@ enum Command {
         /// Write here instead of standard output.
         #[arg(short, long)]
         output: Option<PathBuf>,
+    },
+    /// Draw a sketch as SVG: geometry coloured by whether it can still move, construction
+    /// geometry dashed, constraints and dimensions, conflicting constraints in red. The exit
+    /// status is `loci solve`'s; the picture is written whatever the outcome.
+    Render {
+        /// A loci JSON problem or a SolveSpace `.slvs` file (its last sketch group unless
+        /// `--group` says otherwise).
+        file: PathBuf,
+        /// Write the SVG here instead of standard output.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Draw this group instead of the one the file names.
+        #[arg(long)]
+        group: Option<u32>,
+        /// Draw the file's values as they are, without solving first.
+        #[arg(long)]
+        no_solve: bool,
     },
     /// Check loci against SolveSpace's regression fixtures and print a Markdown report.
     Conformance {
@@ -218,6 +236,12 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             }
             Ok(code::SOLVED)
         }
+        Command::Render {
+            file,
+            output,
+            group,
+            no_solve,
+        } => render::command::run(&file, output.as_deref(), group, no_solve),
         Command::Conformance { dir } => {
             let cmd = format!("loci conformance {}", dir.display());
             let (md, _) = conformance::run(&dir, &cmd)?;

@@ -20,7 +20,7 @@ use super::records::{Kind, Record};
 use super::{GroupStatus, Note, ParamLine, SlvsError, SlvsFile, SlvsGroup};
 use crate::geom::{quaternion_from_uv, Quat};
 use crate::model::{Constraint, Entity, EntityId, GroupId, ObjectId, Param, ParamId, System};
-use std::collections::{HashMap, HashSet};
+use std::collections::{BTreeSet, HashMap, HashSet};
 
 /// The group of geometry loci holds constant: copies a group computes from earlier groups
 /// and faces of solids. No solve ever makes it unknown.
@@ -176,6 +176,7 @@ pub(crate) fn build(
         SlvsError::Model { line, source: e }
     })?;
     groups.sort_by_key(|g| (g.order, g.h));
+    let construction = construction(records, &b.sys);
     Ok(SlvsFile {
         bytes,
         spans,
@@ -183,7 +184,29 @@ pub(crate) fn build(
         groups,
         notes: b.notes,
         param_lines: b.param_lines,
+        construction,
     })
+}
+
+/// The modelled entities marked construction: by their own record, or by the request that
+/// generates them (SolveSpace copies the request's flag onto its entities, but older files
+/// may carry it on the request only).
+fn construction(records: &[Record], sys: &System) -> BTreeSet<EntityId> {
+    let requests: HashSet<u32> = records
+        .iter()
+        .filter(|r| r.kind == Kind::Request && r.flag("Request.construction"))
+        .map(|r| r.hex("Request.h.v"))
+        .collect();
+    records
+        .iter()
+        .filter(|r| r.kind == Kind::Entity)
+        .filter(|r| {
+            let h = r.hex("Entity.h.v");
+            r.flag("Entity.construction") || (h & GROUP_BIT == 0 && requests.contains(&(h >> 16)))
+        })
+        .map(|r| EntityId(r.hex("Entity.h.v")))
+        .filter(|h| sys.entity(*h).is_some())
+        .collect()
 }
 
 impl<'a> Builder<'a> {

@@ -50,8 +50,9 @@ pub use export::{export, Export, ExportError};
 pub use load::FIXED_GROUP;
 pub use solve::{solve_all, GroupResult, GroupSolve};
 
-use crate::model::{GroupId, ObjectId, ParamId, System};
+use crate::model::{EntityId, GroupId, ObjectId, ParamId, System};
 use crate::{ModelError, SolveError};
+use std::collections::BTreeSet;
 use std::fmt;
 
 /// A loaded `.slvs` file: loci's model of it, its groups in solve order, and the original
@@ -69,6 +70,9 @@ pub struct SlvsFile {
     /// What loci skipped, and why.
     pub notes: Vec<Note>,
     param_lines: Vec<ParamLine>,
+    /// The modelled entities the file marks as construction geometry (SolveSpace's
+    /// `construction` flag): they constrain like any other, and are drawn dashed.
+    pub construction: BTreeSet<EntityId>,
 }
 
 /// Where a parameter is written in the original text (0-based line indices).

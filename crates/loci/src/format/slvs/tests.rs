@@ -170,6 +170,30 @@ fn load(text: &str) -> Result<SlvsFile, SlvsError> {
 }
 
 #[test]
+fn construction_flags_are_read_for_modelled_entities() {
+    let f = load(SKETCH).unwrap();
+    // The reference plane's origin and the copied workplane's origin carry the flag; the
+    // sketch's own points do not.
+    let got: Vec<u32> = f.construction.iter().map(|h| h.0).collect();
+    assert!(got.contains(&0x0001_0001), "{got:x?}");
+    assert!(!got.contains(&0x0004_0000), "{got:x?}");
+    assert!(!got.contains(&0x0005_0000), "{got:x?}");
+    for h in &f.construction {
+        assert!(f.system.entity(*h).is_some());
+    }
+    // A request's flag marks the entities it generates.
+    let text = SKETCH.replacen(
+        "Request.h.v=00000004\nRequest.type=101\n",
+        "Request.h.v=00000004\nRequest.type=101\nRequest.construction=1\n",
+        1,
+    );
+    assert_ne!(text, SKETCH);
+    let f = load(&text).unwrap();
+    assert!(f.construction.contains(&EntityId(0x0004_0000)));
+    assert!(!f.construction.contains(&EntityId(0x0005_0000)));
+}
+
+#[test]
 fn loads_groups_params_entities_and_constraints() {
     let f = load(SKETCH).unwrap();
     assert_eq!(f.groups.len(), 2);
