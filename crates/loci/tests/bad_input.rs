@@ -817,8 +817,8 @@ fn unknown_fields_are_errors_naming_the_object() {
             ),
             "\"speed\"",
             "solve: unknown field \"options.speed\"; \"options\" has \"tolerance\", \
-             \"max_iterations\", \"dragged_scale\", \"rank_tolerance\" and \
-             \"verify_conflicts_up_to\"",
+             \"max_iterations\", \"dragged_scale\", \"rank_tolerance\", \
+             \"verify_conflicts_up_to\" and \"nearest\"",
         ),
         (
             edit(TRIANGLE, "\"h\": 11,", "\"h\": 11, \"h\": 12,", 0),

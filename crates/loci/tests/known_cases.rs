@@ -109,20 +109,14 @@ fn movement(start: &System, end: &System) -> f64 {
 }
 
 #[test]
-fn the_jansen_linkage_lands_nearest_the_drawing_when_asked() {
+fn the_jansen_linkage_lands_nearest_the_drawing() {
     // SolveSpace's own Python test asserts p8 = (18.93036, 13.63778), 20.208 from the drawing
-    // in all (SolveSpace 3.3, PyPI slvs, gives that whole configuration); loci's Newton path
-    // ends 20.427 away, at p8 = (19.35966, 14.03307). Both are valid (DOF 10 as the file
-    // writes the workplane). With `nearest`, loci moves on to the solution of least movement.
+    // in all (SolveSpace 3.3, PyPI slvs, gives that whole configuration); the end of loci's
+    // Newton path is 20.427 away, at p8 = (19.35966, 14.03307). Both are valid (DOF 10 as the
+    // file writes the workplane). By default loci moves on to the solution of least movement.
     let start = load("jansen_linkage.json");
-    let mut plain = start.clone();
-    let r = solve(&mut plain, 1.into(), &[], &Config::default()).unwrap();
-    assert!(r.outcome.is_ok() && r.residual <= 1e-9, "{r:?}");
-    let plain_moved = movement(&start, &plain);
-    assert!((plain_moved - 20.4266).abs() < 1e-3, "{plain_moved}");
     let mut near = start.clone();
-    let cfg = Config::default().with_nearest(true);
-    let r = solve(&mut near, 1.into(), &[], &cfg).unwrap();
+    let r = solve(&mut near, 1.into(), &[], &Config::default()).unwrap();
     assert!(r.outcome.is_ok() && r.residual <= 1e-9, "{r:?}");
     let near_moved = movement(&start, &near);
     assert!(
@@ -130,6 +124,13 @@ fn the_jansen_linkage_lands_nearest_the_drawing_when_asked() {
         "{near_moved}: not nearer than SolveSpace's 20.208"
     );
     assert!((near_moved - 18.8778).abs() < 1e-3, "{near_moved}");
+    // SolveSpace's behaviour: the end of Newton's path.
+    let mut plain = start.clone();
+    let cfg = Config::default().with_nearest(false);
+    let r = solve(&mut plain, 1.into(), &[], &cfg).unwrap();
+    assert!(r.outcome.is_ok() && r.residual <= 1e-9, "{r:?}");
+    let plain_moved = movement(&start, &plain);
+    assert!((plain_moved - 20.4266).abs() < 1e-3, "{plain_moved}");
 }
 
 /// `n` distances between one pair of points of a workplane (values alternating 10 and 11

@@ -63,6 +63,9 @@ pub struct Options {
     /// See [`Config::verify_conflicts_up_to`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub verify_conflicts_up_to: Option<usize>,
+    /// See [`Config::nearest`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub nearest: Option<bool>,
 }
 
 impl SolveRequest {
@@ -79,6 +82,7 @@ impl SolveRequest {
             .with_verify_conflicts_up_to(
                 o.verify_conflicts_up_to.unwrap_or(d.verify_conflicts_up_to),
             )
+            .with_nearest(o.nearest.unwrap_or(d.nearest))
             .with_find_failed(self.calculate_failed)
     }
 }

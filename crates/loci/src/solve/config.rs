@@ -33,9 +33,10 @@ pub struct Config {
     /// solutions to the one nearest the drawing: the least weighted movement
     /// `sum ((x_i - x0_i) / s_i)^2` (with `s_i` as in [`Config::dragged_scale`]) among the
     /// solutions around the one Newton reached. Without it the answer is where Newton's
-    /// steps of least movement end, as in SolveSpace. Default `false`: each round of the
-    /// projection costs a Newton iteration, and an under-constrained chain took four times as
-    /// long with it.
+    /// steps of least movement end, as in SolveSpace. Default `true`: users expect the
+    /// solution nearest what they drew. Each round of the projection costs a Newton
+    /// iteration (a 1,000-segment 3D chain with 529 degrees of freedom took 39 iterations
+    /// instead of 6); `false` is the faster SolveSpace behaviour.
     pub nearest: bool,
 }
 
@@ -48,7 +49,7 @@ impl Default for Config {
             rank_tolerance: 1e-10,
             find_failed: true,
             verify_conflicts_up_to: 8,
-            nearest: false,
+            nearest: true,
         }
     }
 }
