@@ -14,6 +14,7 @@ macro_rules! outln {
     ($($t:tt)*) => { $crate::emit(&format!("{}\n", format!($($t)*))) };
 }
 
+mod assemble;
 mod check;
 mod conformance;
 mod report;
@@ -74,6 +75,21 @@ enum Command {
         #[arg(long, value_parser = ["json", "slvs"])]
         to: String,
         /// Write here instead of standard output.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+    /// Solve an assembly file (components, mates, joints) and print each mate's status, the
+    /// assembly's degrees of freedom and every component's remaining motions.
+    Assemble {
+        /// A loci assembly JSON file (docs/assembly-format.md).
+        file: PathBuf,
+        /// Print the report as JSON.
+        #[arg(long)]
+        json: bool,
+        /// Run the stepped relaxation instead, printing every pass.
+        #[arg(long)]
+        steps: bool,
+        /// Write the assembly with its solved poses here.
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
@@ -195,6 +211,12 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             }
             Ok(check::exit_code(&d))
         }
+        Command::Assemble {
+            file,
+            json,
+            steps,
+            output,
+        } => assemble::run(&file, json, steps, output.as_deref()),
         Command::Convert { file, to, output } => {
             let ext = file.extension().and_then(|e| e.to_str()).unwrap_or("");
             if ext == to {

@@ -188,21 +188,11 @@ impl Builder<'_> {
         }
     }
 
-    fn plane(&mut self, l: &L) -> Result<EntityId, ModelError> {
-        let key = Self::key(l.body, 2, l.p);
-        let key2 = Self::key(l.body, 3, l.d);
-        if let (Some(&e), Some(&e2)) = (self.cache.get(&key), self.cache.get(&key2)) {
-            if e == e2 {
-                return Ok(e);
-            }
-        }
-        let o = self.point(&l.point())?;
-        let n = self.normal(&l.dir())?;
-        let g = self.group_of(l.body);
-        let e = self.entity(Entity::workplane(0, g, o.0, n.0))?;
-        self.cache.insert(key, e);
-        self.cache.insert(key2, e);
-        Ok(e)
+    /// A plane as its point and normal: the core's workplanes take only plain normals, so
+    /// plane relations are written as signed distances along the normal
+    /// (`proj_pt_distance`), which a plane carried by a pose can use.
+    fn plane(&mut self, l: &L) -> Result<(EntityId, EntityId), ModelError> {
+        Ok((self.point(&l.point())?, self.normal(&l.dir())?))
     }
 
     fn line(&mut self, l: &L) -> Result<EntityId, ModelError> {
@@ -234,10 +224,10 @@ impl Builder<'_> {
                 self.constraint(mate, new(K::PointsCoincident).with_points(a.0, b.0))
             }
             Prim::InPlane(p, l) => {
-                let (p, w) = (self.point(&p)?, self.plane(&l)?);
+                let (p, (o, n)) = (self.point(&p)?, self.plane(&l)?);
                 self.constraint(
                     mate,
-                    new(K::PtInPlane).with_points(p.0, 0).with_entities([w.0, 0, 0, 0]),
+                    new(K::ProjPtDistance).with_points(o.0, p.0).with_entities([n.0, 0, 0, 0]),
                 )
             }
             Prim::OnLine(p, l) => {
@@ -260,12 +250,12 @@ impl Builder<'_> {
                 self.constraint(mate, new(K::PtPtDistance).with_points(a.0, b.0).with_val(d))
             }
             Prim::PtPlaneDistance(p, l, d) => {
-                let (p, w) = (self.point(&p)?, self.plane(&l)?);
+                let (p, (o, n)) = (self.point(&p)?, self.plane(&l)?);
                 self.constraint(
                     mate,
-                    new(K::PtPlaneDistance)
-                        .with_points(p.0, 0)
-                        .with_entities([w.0, 0, 0, 0])
+                    new(K::ProjPtDistance)
+                        .with_points(o.0, p.0)
+                        .with_entities([n.0, 0, 0, 0])
                         .with_val(d),
                 )
             }

@@ -152,11 +152,16 @@ fn check_bodies(mate: &str, a: &Resolved, b: &Resolved) -> Result<(), AssemblyEr
 /// The primitive relations of `mate`, resolving its selections against `components` at
 /// `poses`. Directions a mate fixes on its first solve (the angle's axis, a joint's zero,
 /// `fixed`'s relative pose) are captured into `mate.persistent` from the current poses.
+///
+/// `hints` are pairs of directions other mates hold parallel between two bodies (a hinge's
+/// axes): an angle mate between the same bodies turns about such an axis when it is normal
+/// to A's direction.
 pub(crate) fn compile(
     components: &[Component],
     world: &[(String, Reference)],
     poses: &[Pose],
     mate: &mut Mate,
+    hints: &[(D, D)],
 ) -> Result<Vec<Prim>, AssemblyError> {
     let id = mate.id.clone();
     let cx = Ctx { mate: &id };
@@ -180,8 +185,37 @@ pub(crate) fn compile(
             Some(a) => a,
             None => {
                 let (wa, wb) = (pose(da.body).direction(da.d), pose(db.body).direction(db.d));
-                let n = math::unit(math::cross(wa, wb)).unwrap_or_else(|| math::perpendicular(wa));
-                let local = pose(da.body).to_local_direction(n);
+                // A hinge between the two components (a direction both hold parallel, normal
+                // to A's) is the axis the angle turns about; `a × b` at the start would carry
+                // whatever tilt the start has. It is turned to agree with `a × b`, so that
+                // the angle at the start reads positive as in the seed.
+                let c = math::cross(wa, wb);
+                let hinted = hints.iter().find_map(|&(x, y)| {
+                    let local = if (x.body, y.body) == (da.body, db.body) {
+                        x.d
+                    } else if (y.body, x.body) == (da.body, db.body) {
+                        y.d
+                    } else {
+                        return None;
+                    };
+                    (math::dot(local, da.d).abs() < 1e-9).then_some(local)
+                });
+                let local = match hinted {
+                    Some(h) => {
+                        let w = pose(da.body).direction(h);
+                        if math::dot(w, c) < 0.0 {
+                            math::scale(h, -1.0)
+                        } else {
+                            h
+                        }
+                    }
+                    None => {
+                        let n = math::unit(c)
+                            .filter(|_| math::norm(c) > 1e-9)
+                            .unwrap_or_else(|| math::perpendicular(wa));
+                        pose(da.body).to_local_direction(n)
+                    }
+                };
                 mate.persistent.axis = Some(local);
                 local
             }
@@ -371,10 +405,18 @@ fn line_in_plane(cx: &Ctx, rl: &Resolved, rp: &Resolved) -> Result<Vec<Prim>, As
     ])
 }
 
-/// A joint's zero: a direction normal to A's axis in A's frame, and the same world direction
-/// in B's frame, taken from the poses when the joint is first solved.
+/// A joint's zero: a direction normal to A's axis in A's frame, and one normal to B's in B's
+/// frame. For a slider, B's is A's world direction when the joint is first solved, so that
+/// the slider holds the parts' turn about the axis as it finds it.
 fn capture_zero(mate: &mut Mate, la: &L, lb: &L, poses: &[Pose]) -> (V3, V3) {
     let pose = |b: Body| b.map_or(Pose::IDENTITY, |i| poses[i]);
+    if mate.kind == MateKind::Revolute {
+        // A revolute's angle is zero where the two references' frames agree: the same
+        // perpendicular of each axis, in each component's own frame.
+        let ua = *mate.persistent.axis.get_or_insert_with(|| math::perpendicular(la.d));
+        let ub = *mate.persistent.axis_b.get_or_insert_with(|| math::perpendicular(lb.d));
+        return (ua, ub);
+    }
     let ua = *mate
         .persistent
         .axis

@@ -228,7 +228,8 @@ pub struct Component {
     #[serde(default)]
     pub grounded: bool,
     /// Its named references, in its own frame (the frame itself is always there as `frame`).
-    #[serde(default)]
+    /// In files, an object from name to reference, kept in file order.
+    #[serde(default, with = "named")]
     pub references: Vec<(String, Reference)>,
 }
 
@@ -268,5 +269,45 @@ impl Component {
             .iter()
             .find(|(n, _)| n == name)
             .map(|(_, r)| r)
+    }
+}
+
+/// A list of named references as a JSON object, in order.
+pub(crate) mod named {
+    use super::Reference;
+    use serde::de::{MapAccess, Visitor};
+    use serde::ser::SerializeMap;
+    use serde::{Deserializer, Serializer};
+    use std::fmt;
+
+    pub fn serialize<S: Serializer>(v: &[(String, Reference)], s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(Some(v.len()))?;
+        for (k, r) in v {
+            m.serialize_entry(k, r)?;
+        }
+        m.end()
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(String, Reference)>, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = Vec<(String, Reference)>;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("an object from reference name to reference")
+            }
+            fn visit_map<A: MapAccess<'de>>(self, mut a: A) -> Result<Self::Value, A::Error> {
+                let mut out: Vec<(String, Reference)> = Vec::new();
+                while let Some((k, r)) = a.next_entry::<String, Reference>()? {
+                    if k == "frame" || out.iter().any(|(n, _)| *n == k) {
+                        return Err(serde::de::Error::custom(format!(
+                            "reference `{k}` is defined twice (`frame` is always the component frame)"
+                        )));
+                    }
+                    out.push((k, r));
+                }
+                Ok(out)
+            }
+        }
+        d.deserialize_map(V)
     }
 }

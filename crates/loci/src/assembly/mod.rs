@@ -97,7 +97,7 @@ pub struct Assembly {
     #[serde(default)]
     pub components: Vec<Component>,
     /// References fixed in the world, attached to no component.
-    #[serde(default)]
+    #[serde(default, with = "component::named", skip_serializing_if = "Vec::is_empty")]
     pub world: Vec<(String, Reference)>,
     /// The mates and joints, in order.
     #[serde(default)]
@@ -215,10 +215,34 @@ impl Assembly {
     fn compile_all(&mut self) -> Vec<Result<Vec<Prim>, AssemblyError>> {
         let poses = self.poses();
         let (components, world) = (&self.components, &self.world);
-        self.mates
+        let is_angle = |m: &Mate| matches!(m.kind, MateKind::Angle { .. });
+        let mut out: Vec<Result<Vec<Prim>, AssemblyError>> = self
+            .mates
             .iter_mut()
-            .map(|m| compile::compile(components, world, &poses, m))
-            .collect()
+            .map(|m| {
+                if is_angle(m) {
+                    Ok(Vec::new())
+                } else {
+                    compile::compile(components, world, &poses, m, &[])
+                }
+            })
+            .collect();
+        // Angle mates last: a hinge's axis is the natural reference axis of an angle about it.
+        let hints: Vec<_> = out
+            .iter()
+            .flatten()
+            .flatten()
+            .filter_map(|p| match p {
+                Prim::Parallel(a, b, _) => Some((*a, *b)),
+                _ => None,
+            })
+            .collect();
+        for (m, o) in self.mates.iter_mut().zip(out.iter_mut()) {
+            if is_angle(m) {
+                *o = compile::compile(components, world, &poses, m, &hints);
+            }
+        }
+        out
     }
 
     fn angle_tol(&self) -> f64 {
@@ -552,7 +576,7 @@ impl Assembly {
     pub fn measure_angle(&mut self, id: &str) -> Option<AngleReading> {
         let poses = self.poses();
         let i = self.mates.iter().position(|m| m.id == id)?;
-        let prims = compile::compile(&self.components, &self.world, &poses, &mut self.mates[i]).ok()?;
+        let prims = self.compile_all().swap_remove(i).ok()?;
         let mut r = MateReport {
             id: String::new(),
             kind: String::new(),

@@ -127,18 +127,19 @@ fn both_grounded_is_blocked_unless_it_already_holds() {
 
 #[test]
 fn joint_limits_are_reported_when_violated() {
-    let mut asm = two(Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 50.0));
+    // A revolute's angle is zero where the two references' frames agree.
+    let mut asm = two(Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 20.0));
     let id = asm
         .add_mate(
             Mate::new(K::Revolute, Selection::on("g", "axis"), Selection::on("b", "axis")).with_limits(-30.0, 30.0),
         )
         .unwrap();
-    // The zero is where the joint is first solved: 0 degrees; then the part turns to 50.
-    let r = asm.solve().unwrap();
-    assert!(!r.mate(&id).unwrap().limit_violated);
-    asm.components[1].pose = Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 90.0);
     let r = asm.solve().unwrap();
     let m = r.mate(&id).unwrap();
-    assert!((m.value.unwrap() - 40.0).abs() < 1e-6, "{r}");
-    assert!(m.limit_violated && m.message.contains("joint limit"), "{r}");
+    assert!((m.value.unwrap() - 20.0).abs() < 1e-9 && !m.limit_violated, "{r}");
+    asm.components[1].pose = Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 50.0);
+    let r = asm.solve().unwrap();
+    let m = r.mate(&id).unwrap();
+    assert!((m.value.unwrap() - 50.0).abs() < 1e-9, "{r}");
+    assert!(m.limit_violated && m.message.contains("joint limit [-30, 30] violated"), "{r}");
 }
