@@ -7,6 +7,7 @@ use super::error::AssemblyError;
 use super::mate::{Mate, MateKind, Selection};
 use super::math::{self, V3};
 use super::prim::{Body, Prim, D, L, P};
+use std::collections::HashMap;
 
 /// A selection resolved to its body and reference.
 #[derive(Clone, Debug)]
@@ -19,6 +20,7 @@ pub(crate) struct Resolved {
 /// Finds what `sel` names.
 pub(crate) fn resolve(
     components: &[Component],
+    index: &HashMap<&str, usize>,
     world: &[(String, Reference)],
     mate: &str,
     sel: &Selection,
@@ -30,9 +32,9 @@ pub(crate) fn resolve(
     };
     match &sel.component {
         Some(name) => {
-            let i = components
-                .iter()
-                .position(|c| &c.name == name)
+            let i = index
+                .get(name.as_str())
+                .copied()
                 .ok_or_else(|| AssemblyError::UnknownComponent {
                     mate: mate.into(),
                     component: name.clone(),
@@ -154,19 +156,20 @@ fn check_bodies(mate: &str, a: &Resolved, b: &Resolved) -> Result<(), AssemblyEr
 /// `fixed`'s relative pose) are captured into `mate.persistent` from the current poses.
 ///
 /// `hints` are pairs of directions other mates hold parallel between two bodies (a hinge's
-/// axes): an angle mate between the same bodies turns about such an axis when it is normal
+/// axes), by the pair of bodies (lower first): an angle mate between the same bodies turns about such an axis when it is normal
 /// to A's direction.
 pub(crate) fn compile(
     components: &[Component],
+    index: &HashMap<&str, usize>,
     world: &[(String, Reference)],
     poses: &[Pose],
     mate: &mut Mate,
-    hints: &[(D, D)],
+    hints: &HashMap<(Body, Body), Vec<(D, D)>>,
 ) -> Result<Vec<Prim>, AssemblyError> {
     let id = mate.id.clone();
     let cx = Ctx { mate: &id };
-    let ra = resolve(components, world, &id, &mate.a)?;
-    let rb = resolve(components, world, &id, &mate.b)?;
+    let ra = resolve(components, index, world, &id, &mate.a)?;
+    let rb = resolve(components, index, world, &id, &mate.b)?;
     let pose = |b: Body| b.map_or(Pose::IDENTITY, |i| poses[i]);
     if let MateKind::Angle { degrees } = mate.kind {
         // The seed's order: a direction from each, then both on components, then two of them.
@@ -190,7 +193,10 @@ pub(crate) fn compile(
                 // whatever tilt the start has. It is turned to agree with `a × b`, so that
                 // the angle at the start reads positive as in the seed.
                 let c = math::cross(wa, wb);
-                let hinted = hints.iter().find_map(|&(x, y)| {
+                let pair = |a: Body, b: Body| if a <= b { (a, b) } else { (b, a) };
+                let none = Vec::new();
+                let near = hints.get(&pair(da.body, db.body)).unwrap_or(&none);
+                let hinted = near.iter().find_map(|&(x, y)| {
                     let local = if (x.body, y.body) == (da.body, db.body) {
                         x.d
                     } else if (y.body, x.body) == (da.body, db.body) {

@@ -155,10 +155,14 @@ impl Assembly {
                 .filter(|x| x.kind.id_prefix() == prefix)
                 .count();
             let mut k = n + 1;
-            while self.mates.iter().any(|x| x.id == format!("{prefix}{k}")) {
+            loop {
+                let id = format!("{prefix}{k}");
+                if !self.mates.iter().any(|x| x.id == id) {
+                    m.id = id;
+                    break;
+                }
                 k += 1;
             }
-            m.id = format!("{prefix}{k}");
         }
         if self.mates.iter().any(|x| x.id == m.id) {
             return Err(AssemblyError::DuplicateMate(m.id));
@@ -181,13 +185,14 @@ impl Assembly {
     }
 
     fn check(&mut self) -> Result<(), AssemblyError> {
-        for (i, c) in self.components.iter().enumerate() {
+        let mut names = std::collections::HashSet::new();
+        for c in &self.components {
             check_component(c)?;
-            if self.components[..i].iter().any(|x| x.name == c.name) {
+            if !names.insert(c.name.as_str()) {
                 return Err(AssemblyError::DuplicateComponent(c.name.clone()));
             }
         }
-        let mut ids: Vec<String> = Vec::new();
+        let mut ids = std::collections::HashSet::new();
         let mut counts = std::collections::HashMap::new();
         for m in &mut self.mates {
             let n = counts.entry(m.kind.id_prefix()).or_insert(0usize);
@@ -195,10 +200,9 @@ impl Assembly {
             if m.id.is_empty() {
                 m.id = format!("{}{}", m.kind.id_prefix(), n);
             }
-            if ids.contains(&m.id) {
+            if !ids.insert(m.id.clone()) {
                 return Err(AssemblyError::DuplicateMate(m.id.clone()));
             }
-            ids.push(m.id.clone());
         }
         Ok(())
     }
@@ -215,6 +219,8 @@ impl Assembly {
     fn compile_all(&mut self) -> Vec<Result<Vec<Prim>, AssemblyError>> {
         let poses = self.poses();
         let (components, world) = (&self.components, &self.world);
+        let index: std::collections::HashMap<&str, usize> =
+            components.iter().enumerate().map(|(i, c)| (c.name.as_str(), i)).collect();
         let is_angle = |m: &Mate| matches!(m.kind, MateKind::Angle { .. });
         let mut out: Vec<Result<Vec<Prim>, AssemblyError>> = self
             .mates
@@ -223,23 +229,22 @@ impl Assembly {
                 if is_angle(m) {
                     Ok(Vec::new())
                 } else {
-                    compile::compile(components, world, &poses, m, &[])
+                    compile::compile(components, &index, world, &poses, m, &Default::default())
                 }
             })
             .collect();
         // Angle mates last: a hinge's axis is the natural reference axis of an angle about it.
-        let hints: Vec<_> = out
-            .iter()
-            .flatten()
-            .flatten()
-            .filter_map(|p| match p {
-                Prim::Parallel(a, b, _) => Some((*a, *b)),
-                _ => None,
-            })
-            .collect();
+        let mut hints: std::collections::HashMap<(prim::Body, prim::Body), Vec<_>> =
+            std::collections::HashMap::new();
+        for p in out.iter().flatten().flatten() {
+            if let Prim::Parallel(a, b, _) = p {
+                let key = if a.body <= b.body { (a.body, b.body) } else { (b.body, a.body) };
+                hints.entry(key).or_default().push((*a, *b));
+            }
+        }
         for (m, o) in self.mates.iter_mut().zip(out.iter_mut()) {
             if is_angle(m) {
-                *o = compile::compile(components, world, &poses, m, &hints);
+                *o = compile::compile(components, &index, world, &poses, m, &hints);
             }
         }
         out
