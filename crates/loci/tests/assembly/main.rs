@@ -2,6 +2,7 @@
 //! the stepped mode and the report.
 
 mod angle;
+mod examples;
 mod mates;
 mod report;
 mod stepped;
