@@ -6,9 +6,16 @@ use loci::format::assembly::{read, write};
 use std::path::Path;
 
 /// Reads `file`, solves it (all mates at once, or with `steps` the stepped relaxation, each
-/// pass printed), prints the report (or JSON) and writes the solved assembly to `output`.
+/// pass printed), prints the report (or JSON), writes the solved assembly to `output` and its
+/// picture to `svg`.
 /// The exit status is 0 when every mate holds, 1 when mates conflict, 2 otherwise.
-pub fn run(file: &Path, json: bool, steps: bool, output: Option<&Path>) -> anyhow::Result<u8> {
+pub fn run(
+    file: &Path,
+    json: bool,
+    steps: bool,
+    output: Option<&Path>,
+    svg: Option<&Path>,
+) -> anyhow::Result<u8> {
     let text = std::fs::read_to_string(file)
         .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", file.display()))?;
     let mut asm = read(&text).map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
@@ -40,7 +47,7 @@ pub fn run(file: &Path, json: bool, steps: bool, output: Option<&Path>) -> anyho
                 }
             }
         }
-        write_out(&asm, output)?;
+        write_out(&asm, output, svg)?;
         return Ok(if run.converged { code::SOLVED } else { code::DID_NOT_CONVERGE });
     }
     let report = asm
@@ -52,11 +59,29 @@ pub fn run(file: &Path, json: bool, steps: bool, output: Option<&Path>) -> anyho
         outln!("{}:", file.display());
         out!("{report}");
     }
-    write_out(&asm, output)?;
+    write_out(&asm, output, svg)?;
     Ok(exit_code(&report))
 }
 
-fn write_out(asm: &loci::assembly::Assembly, output: Option<&Path>) -> anyhow::Result<()> {
+fn write_out(
+    asm: &loci::assembly::Assembly,
+    output: Option<&Path>,
+    svg: Option<&Path>,
+) -> anyhow::Result<()> {
+    if let Some(p) = svg {
+        // Glyphs a tenth of the assembly's spread, so small and large assemblies both read.
+        let t: Vec<[f64; 3]> = asm.components.iter().map(|c| c.pose.translation).collect();
+        let spread = (0..3)
+            .map(|k| {
+                let lo = t.iter().map(|v| v[k]).fold(f64::INFINITY, f64::min);
+                let hi = t.iter().map(|v| v[k]).fold(f64::NEG_INFINITY, f64::max);
+                if lo.is_finite() { hi - lo } else { 0.0 }
+            })
+            .fold(0.0, f64::max);
+        let size = if spread > 0.0 { spread / 10.0 } else { 1.0 };
+        std::fs::write(p, crate::assembly_svg::assembly_svg(asm, size))
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", p.display()))?;
+    }
     if let Some(out) = output {
         std::fs::write(out, write(asm) + "\n")
             .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?;

@@ -15,6 +15,7 @@ macro_rules! outln {
 }
 
 mod assemble;
+mod assembly_svg;
 mod check;
 mod conformance;
 mod report;
@@ -92,6 +93,10 @@ enum Command {
         /// Write the assembly with its solved poses here.
         #[arg(short, long)]
         output: Option<PathBuf>,
+        /// Draw the solved assembly here as an SVG (isometric wireframe of frames and
+        /// references).
+        #[arg(long)]
+        svg: Option<PathBuf>,
     },
     /// Check loci against SolveSpace's regression fixtures and print a Markdown report.
     Conformance {
@@ -216,7 +221,8 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             json,
             steps,
             output,
-        } => assemble::run(&file, json, steps, output.as_deref()),
+            svg,
+        } => assemble::run(&file, json, steps, output.as_deref(), svg.as_deref()),
         Command::Convert { file, to, output } => {
             let ext = file.extension().and_then(|e| e.to_str()).unwrap_or("");
             if ext == to {
