@@ -45,6 +45,13 @@ pub fn perturb(p: Pose, rng: &mut Lcg, dt: f64, deg: f64) -> Pose {
     )
 }
 
+/// Adds a mate with an id of its own, without [`Assembly::add_mate`]'s search for a free
+/// one (quadratic in the number of mates; [`Assembly::solve`] still checks ids are unique).
+fn push(asm: &mut Assembly, m: Mate) {
+    let id = format!("{}{}", m.kind.id_prefix(), asm.mates.len() + 1);
+    asm.mates.push(m.with_id(&id));
+}
+
 /// A chain of `n` unit links: link 0 grounded, each joint a revolute written as a coincident
 /// pivot and parallel hinge axes, plus a 30-degree angle mate between the links' arms.
 #[must_use]
@@ -73,10 +80,9 @@ pub fn chain(n: usize, seed: u64) -> Assembly {
     for i in 1..n {
         let (a, b) = (format!("link{}", i - 1), format!("link{i}"));
         let s = |c: &str, r: &str| Selection::on(c, r);
-        asm.add_mate(Mate::new(MateKind::Coincident, s(&a, "tip"), s(&b, "pivot"))).unwrap();
-        asm.add_mate(Mate::new(MateKind::Parallel, s(&a, "hinge"), s(&b, "hinge"))).unwrap();
-        asm.add_mate(Mate::new(MateKind::Angle { degrees: 30.0 }, s(&a, "arm"), s(&b, "arm")))
-            .unwrap();
+        push(&mut asm, Mate::new(MateKind::Coincident, s(&a, "tip"), s(&b, "pivot")));
+        push(&mut asm, Mate::new(MateKind::Parallel, s(&a, "hinge"), s(&b, "hinge")));
+        push(&mut asm, Mate::new(MateKind::Angle { degrees: 30.0 }, s(&a, "arm"), s(&b, "arm")));
     }
     asm
 }
@@ -198,6 +204,49 @@ pub struct Timing {
     pub converged: bool,
     /// Stepped passes, when run: (passes, converged, milliseconds).
     pub stepped: Option<(usize, bool, f64)>,
+    /// SolveSpace on the same chain, when run: its verdict and solve time in milliseconds.
+    pub slvs: Option<(String, f64)>,
+}
+
+/// Runs the chain of `n` links (from the same start as loci's) through SolveSpace's Python
+/// binding in `bench/.venv`, if it is there: its verdict and best solve time of `reps`.
+pub fn slvs_chain(n: usize, reps: usize, bench: &std::path::Path) -> Option<(String, f64)> {
+    let py = bench.join(".venv/bin/python");
+    if !py.exists() {
+        return None;
+    }
+    let asm = chain(n, 1);
+    let poses: Vec<Vec<f64>> = asm
+        .components
+        .iter()
+        .map(|c| c.pose.translation.iter().chain(&c.pose.rotation).copied().collect())
+        .collect();
+    let dir = std::env::temp_dir();
+    let start = dir.join(format!("loci-asm-start-{}-{n}.json", std::process::id()));
+    let out = dir.join(format!("loci-asm-slvs-{}-{n}.json", std::process::id()));
+    std::fs::write(&start, serde_json::to_string(&poses).ok()?).ok()?;
+    let status = std::process::Command::new(py)
+        .arg(bench.join("runners/slvs_assembly.py"))
+        .arg(&start)
+        .arg(reps.to_string())
+        .arg(&out)
+        .status()
+        .ok()?;
+    let _ = std::fs::remove_file(&start);
+    if !status.success() {
+        return Some(("runner failed".into(), f64::NAN));
+    }
+    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&out).ok()?).ok()?;
+    let _ = std::fs::remove_file(&out);
+    let verdict = match v["result"].as_i64() {
+        Some(0) => "okay",
+        Some(1) => "inconsistent",
+        Some(2) => "did not converge",
+        Some(3) => "refused: too many unknowns",
+        Some(4) => "redundant okay",
+        _ => "unknown",
+    };
+    Some((verdict.into(), v["solve_ms"].as_f64().unwrap_or(f64::NAN)))
 }
 
 /// Times `make()`'s assembly: the best of `reps` simultaneous solves (each on a fresh copy,
@@ -231,17 +280,20 @@ pub fn time(name: &str, make: &dyn Fn() -> Assembly, reps: usize, steps: Option<
         residual: r.residual,
         converged: r.all_hold(),
         stepped,
+        slvs: None,
     }
 }
 
 /// The whole set: chains of `sizes` links and, with `others`, the four-bar and a 10 by 10
 /// grid of plates (and the stepped mode's passes).
-pub fn run_all(sizes: &[usize], reps: usize, others: bool) -> Vec<Timing> {
+pub fn run_all(sizes: &[usize], reps: usize, others: bool, bench: Option<&std::path::Path>) -> Vec<Timing> {
     let mut out = Vec::new();
     for &n in sizes {
         let steps = (n <= 100 && others).then_some(20_000);
         let reps = if n >= 10_000 { reps.min(3) } else { reps };
-        out.push(time(&format!("revolute chain, {n} links"), &|| chain(n, 1), reps, steps));
+        let mut t = time(&format!("revolute chain, {n} links"), &|| chain(n, 1), reps, steps);
+        t.slvs = bench.and_then(|b| slvs_chain(n, if n >= 100 { 1 } else { reps }, b));
+        out.push(t);
     }
     if others {
         out.push(time("3D four-bar (RSSR)", &|| four_bar(2), reps, Some(20_000)));
@@ -254,17 +306,22 @@ pub fn run_all(sizes: &[usize], reps: usize, others: bool) -> Vec<Timing> {
 #[must_use]
 pub fn table(t: &[Timing]) -> String {
     let mut s = String::new();
-    s.push_str("| assembly | components | mates | loci (ms) | Newton iterations | residual | all mates hold | stepped passes (seed's relaxation) |\n");
-    s.push_str("|---|---:|---:|---:|---:|---:|:---:|---:|\n");
+    s.push_str("| assembly | components | mates | loci (ms) | Newton iterations | residual | all mates hold | stepped passes (seed's relaxation) | SolveSpace (slvs) |\n");
+    s.push_str("|---|---:|---:|---:|---:|---:|:---:|---:|---|\n");
     for x in t {
         let stepped = match x.stepped {
             Some((p, true, ms)) => format!("{p} ({ms:.0} ms)"),
             Some((p, false, ms)) => format!("not converged after {p} ({ms:.0} ms)"),
             None => "not run".into(),
         };
+        let slvs = match &x.slvs {
+            Some((v, ms)) if ms.is_finite() => format!("{v}, {ms:.1} ms (×{:.0} loci)", ms / x.ms),
+            Some((v, _)) => v.clone(),
+            None => "not run".into(),
+        };
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {:.2} | {} | {:.1e} | {} | {} |",
+            "| {} | {} | {} | {:.2} | {} | {:.1e} | {} | {} | {} |",
             x.name,
             x.components,
             x.mates,
@@ -272,7 +329,8 @@ pub fn table(t: &[Timing]) -> String {
             x.iterations,
             x.residual,
             if x.converged { "yes" } else { "no" },
-            stepped
+            stepped,
+            slvs
         );
     }
     s
