@@ -315,7 +315,10 @@ pub fn table(t: &[Timing]) -> String {
             None => "not run".into(),
         };
         let slvs = match &x.slvs {
-            Some((v, ms)) if ms.is_finite() => format!("{v}, {ms:.1} ms (×{:.0} loci)", ms / x.ms),
+            Some((v, ms)) if ms.is_finite() && v == "okay" => {
+                format!("{v}, {ms:.1} ms (×{:.1} loci's time)", ms / x.ms)
+            }
+            Some((v, ms)) if ms.is_finite() => format!("{v} after {ms:.1} ms"),
             Some((v, _)) => v.clone(),
             None => "not run".into(),
         };
