@@ -15,12 +15,18 @@ impl Lcg {
     /// Seeded.
     #[must_use]
     pub fn new(seed: u64) -> Self {
-        Self(seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407))
+        Self(
+            seed.wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407),
+        )
     }
 
     /// Uniform in [-1, 1).
     pub fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
     }
 }
@@ -40,7 +46,11 @@ pub fn perturb(p: Pose, rng: &mut Lcg, dt: f64, deg: f64) -> Pose {
     let turn = Pose::from_axis_angle([0.0; 3], axis, deg * rng.unit());
     let t = p.translation;
     Pose::new(
-        [t[0] + dt * rng.unit(), t[1] + dt * rng.unit(), t[2] + dt * rng.unit()],
+        [
+            t[0] + dt * rng.unit(),
+            t[1] + dt * rng.unit(),
+            t[2] + dt * rng.unit(),
+        ],
         qmul(turn.rotation, p.rotation),
     )
 }
@@ -66,9 +76,26 @@ pub fn chain(n: usize, seed: u64) -> Assembly {
         let tip = answer.point([1.0, 0.0, 0.0]);
         let mut c = Component::new(format!("link{i}"), answer)
             .with("pivot", Reference::Vertex { point: [0.0; 3] })
-            .with("tip", Reference::Vertex { point: [1.0, 0.0, 0.0] })
-            .with("hinge", Reference::Axis { point: [0.0; 3], direction: [0.0, 0.0, 1.0] })
-            .with("arm", Reference::Edge { point: [0.0; 3], direction: [1.0, 0.0, 0.0] });
+            .with(
+                "tip",
+                Reference::Vertex {
+                    point: [1.0, 0.0, 0.0],
+                },
+            )
+            .with(
+                "hinge",
+                Reference::Axis {
+                    point: [0.0; 3],
+                    direction: [0.0, 0.0, 1.0],
+                },
+            )
+            .with(
+                "arm",
+                Reference::Edge {
+                    point: [0.0; 3],
+                    direction: [1.0, 0.0, 0.0],
+                },
+            );
         if i == 0 {
             c.grounded = true;
         } else {
@@ -80,9 +107,22 @@ pub fn chain(n: usize, seed: u64) -> Assembly {
     for i in 1..n {
         let (a, b) = (format!("link{}", i - 1), format!("link{i}"));
         let s = |c: &str, r: &str| Selection::on(c, r);
-        push(&mut asm, Mate::new(MateKind::Coincident, s(&a, "tip"), s(&b, "pivot")));
-        push(&mut asm, Mate::new(MateKind::Parallel, s(&a, "hinge"), s(&b, "hinge")));
-        push(&mut asm, Mate::new(MateKind::Angle { degrees: 30.0 }, s(&a, "arm"), s(&b, "arm")));
+        push(
+            &mut asm,
+            Mate::new(MateKind::Coincident, s(&a, "tip"), s(&b, "pivot")),
+        );
+        push(
+            &mut asm,
+            Mate::new(MateKind::Parallel, s(&a, "hinge"), s(&b, "hinge")),
+        );
+        push(
+            &mut asm,
+            Mate::new(
+                MateKind::Angle { degrees: 30.0 },
+                s(&a, "arm"),
+                s(&b, "arm"),
+            ),
+        );
     }
     asm
 }
@@ -104,36 +144,73 @@ pub fn four_bar(seed: u64) -> Assembly {
     let mut asm = Assembly::new();
     asm.options.diagnose = false;
     let v = |p| Reference::Vertex { point: p };
-    let ax = |p, d| Reference::Axis { point: p, direction: d };
+    let ax = |p, d| Reference::Axis {
+        point: p,
+        direction: d,
+    };
     asm.add_component(
         Component::new("ground", Pose::IDENTITY)
             .grounded()
             .with("crank_axis", ax([0.0; 3], [0.0, 0.0, 1.0]))
             .with("rocker_axis", ax([3.0, 0.0, 0.0], [0.0, 1.0, 0.0]))
-            .with("xref", Reference::Edge { point: [0.0; 3], direction: [1.0, 0.0, 0.0] }),
+            .with(
+                "xref",
+                Reference::Edge {
+                    point: [0.0; 3],
+                    direction: [1.0, 0.0, 0.0],
+                },
+            ),
     )
     .unwrap();
     let mut add = |c: Component| {
         let answer = c.pose;
-        asm.add_component(Component { pose: perturb(answer, &mut rng, 0.3, 5.0), ..c }).unwrap();
+        asm.add_component(Component {
+            pose: perturb(answer, &mut rng, 0.3, 5.0),
+            ..c
+        })
+        .unwrap();
     };
-    add(Component::new("crank", Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 60.0))
-        .with("pivot", ax([0.0; 3], [0.0, 0.0, 1.0]))
-        .with("tip", v([1.0, 0.0, 0.0]))
-        .with("arm", Reference::Edge { point: [0.0; 3], direction: [1.0, 0.0, 0.0] }));
+    add(Component::new(
+        "crank",
+        Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 60.0),
+    )
+    .with("pivot", ax([0.0; 3], [0.0, 0.0, 1.0]))
+    .with("tip", v([1.0, 0.0, 0.0]))
+    .with(
+        "arm",
+        Reference::Edge {
+            point: [0.0; 3],
+            direction: [1.0, 0.0, 0.0],
+        },
+    ));
     add(Component::new("coupler", Pose::new(tipc, q))
         .with("end_a", v([0.0; 3]))
         .with("end_b", v([len, 0.0, 0.0])));
-    add(Component::new("rocker", Pose::from_axis_angle([3.0, 0.0, 0.0], [0.0, 1.0, 0.0], -120.0))
-        .with("pivot", ax([0.0; 3], [0.0, 1.0, 0.0]))
-        .with("tip", v([2.0, 0.0, 0.0])));
+    add(Component::new(
+        "rocker",
+        Pose::from_axis_angle([3.0, 0.0, 0.0], [0.0, 1.0, 0.0], -120.0),
+    )
+    .with("pivot", ax([0.0; 3], [0.0, 1.0, 0.0]))
+    .with("tip", v([2.0, 0.0, 0.0])));
     let s = |c: &str, r: &str| Selection::on(c, r);
     for (k, a, b) in [
-        (MateKind::Revolute, s("ground", "crank_axis"), s("crank", "pivot")),
+        (
+            MateKind::Revolute,
+            s("ground", "crank_axis"),
+            s("crank", "pivot"),
+        ),
         (MateKind::Ball, s("crank", "tip"), s("coupler", "end_a")),
         (MateKind::Ball, s("rocker", "tip"), s("coupler", "end_b")),
-        (MateKind::Revolute, s("ground", "rocker_axis"), s("rocker", "pivot")),
-        (MateKind::Angle { degrees: 60.0 }, s("ground", "xref"), s("crank", "arm")),
+        (
+            MateKind::Revolute,
+            s("ground", "rocker_axis"),
+            s("rocker", "pivot"),
+        ),
+        (
+            MateKind::Angle { degrees: 60.0 },
+            s("ground", "xref"),
+            s("crank", "arm"),
+        ),
     ] {
         asm.add_mate(Mate::new(k, a, b)).unwrap();
     }
@@ -149,7 +226,10 @@ pub fn plates(n: usize, seed: u64) -> Assembly {
     let mut rng = Lcg::new(seed);
     let mut asm = Assembly::new();
     asm.options.diagnose = false;
-    let f = |p, d| Reference::Face { point: p, normal: d };
+    let f = |p, d| Reference::Face {
+        point: p,
+        normal: d,
+    };
     asm.add_component(
         Component::new("floor", Pose::IDENTITY)
             .grounded()
@@ -165,8 +245,18 @@ pub fn plates(n: usize, seed: u64) -> Assembly {
                 .with("bottom", f([0.0; 3], [0.0, 0.0, -1.0]))
                 .with("right", f([1.0, 0.0, 0.0], [1.0, 0.0, 0.0]))
                 .with("back", f([0.0, 1.0, 0.0], [0.0, 1.0, 0.0]))
-                .with("v00", Reference::Vertex { point: [0.0, 0.0, 0.0] })
-                .with("v01", Reference::Vertex { point: [0.0, 1.0, 0.0] });
+                .with(
+                    "v00",
+                    Reference::Vertex {
+                        point: [0.0, 0.0, 0.0],
+                    },
+                )
+                .with(
+                    "v01",
+                    Reference::Vertex {
+                        point: [0.0, 1.0, 0.0],
+                    },
+                );
             asm.add_component(c).unwrap();
         }
     }
@@ -174,12 +264,28 @@ pub fn plates(n: usize, seed: u64) -> Assembly {
     for i in 0..n {
         for j in 0..n {
             let me = format!("p{i}_{j}");
-            asm.add_mate(Mate::new(MateKind::TouchAlign, s("floor", "top"), s(&me, "bottom"))).unwrap();
-            let left = if i == 0 { s("floor", "left") } else { s(&format!("p{}_{j}", i - 1), "right") };
-            asm.add_mate(Mate::new(MateKind::Coincident, left.clone(), s(&me, "v00"))).unwrap();
-            asm.add_mate(Mate::new(MateKind::Coincident, left, s(&me, "v01"))).unwrap();
-            let front = if j == 0 { s("floor", "front") } else { s(&format!("p{i}_{}", j - 1), "back") };
-            asm.add_mate(Mate::new(MateKind::Coincident, front, s(&me, "v00"))).unwrap();
+            asm.add_mate(Mate::new(
+                MateKind::TouchAlign,
+                s("floor", "top"),
+                s(&me, "bottom"),
+            ))
+            .unwrap();
+            let left = if i == 0 {
+                s("floor", "left")
+            } else {
+                s(&format!("p{}_{j}", i - 1), "right")
+            };
+            asm.add_mate(Mate::new(MateKind::Coincident, left.clone(), s(&me, "v00")))
+                .unwrap();
+            asm.add_mate(Mate::new(MateKind::Coincident, left, s(&me, "v01")))
+                .unwrap();
+            let front = if j == 0 {
+                s("floor", "front")
+            } else {
+                s(&format!("p{i}_{}", j - 1), "back")
+            };
+            asm.add_mate(Mate::new(MateKind::Coincident, front, s(&me, "v00")))
+                .unwrap();
         }
     }
     asm
@@ -219,7 +325,14 @@ pub fn slvs_chain(n: usize, reps: usize, bench: &std::path::Path) -> Option<(Str
     let poses: Vec<Vec<f64>> = asm
         .components
         .iter()
-        .map(|c| c.pose.translation.iter().chain(&c.pose.rotation).copied().collect())
+        .map(|c| {
+            c.pose
+                .translation
+                .iter()
+                .chain(&c.pose.rotation)
+                .copied()
+                .collect()
+        })
         .collect();
     let dir = std::env::temp_dir();
     let start = dir.join(format!("loci-asm-start-{}-{n}.json", std::process::id()));
@@ -269,7 +382,11 @@ pub fn time(name: &str, make: &dyn Fn() -> Assembly, reps: usize, steps: Option<
         asm.options.max_steps = max;
         let t = Instant::now();
         let run = asm.solve_stepped().expect("valid");
-        (run.iterations.len(), run.converged, t.elapsed().as_secs_f64() * 1e3)
+        (
+            run.iterations.len(),
+            run.converged,
+            t.elapsed().as_secs_f64() * 1e3,
+        )
     });
     Timing {
         name: name.into(),
@@ -286,18 +403,38 @@ pub fn time(name: &str, make: &dyn Fn() -> Assembly, reps: usize, steps: Option<
 
 /// The whole set: chains of `sizes` links and, with `others`, the four-bar and a 10 by 10
 /// grid of plates (and the stepped mode's passes).
-pub fn run_all(sizes: &[usize], reps: usize, others: bool, bench: Option<&std::path::Path>) -> Vec<Timing> {
+pub fn run_all(
+    sizes: &[usize],
+    reps: usize,
+    others: bool,
+    bench: Option<&std::path::Path>,
+) -> Vec<Timing> {
     let mut out = Vec::new();
     for &n in sizes {
         let steps = (n <= 100 && others).then_some(20_000);
         let reps = if n >= 10_000 { reps.min(3) } else { reps };
-        let mut t = time(&format!("revolute chain, {n} links"), &|| chain(n, 1), reps, steps);
+        let mut t = time(
+            &format!("revolute chain, {n} links"),
+            &|| chain(n, 1),
+            reps,
+            steps,
+        );
         t.slvs = bench.and_then(|b| slvs_chain(n, if n >= 100 { 1 } else { reps }, b));
         out.push(t);
     }
     if others {
-        out.push(time("3D four-bar (RSSR)", &|| four_bar(2), reps, Some(20_000)));
-        out.push(time("grid of plates, 10 x 10", &|| plates(10, 3), reps, Some(20_000)));
+        out.push(time(
+            "3D four-bar (RSSR)",
+            &|| four_bar(2),
+            reps,
+            Some(20_000),
+        ));
+        out.push(time(
+            "grid of plates, 10 x 10",
+            &|| plates(10, 3),
+            reps,
+            Some(20_000),
+        ));
     }
     out
 }
@@ -355,9 +492,17 @@ mod tests {
         let mut a = chain(10, 1);
         a.solve().unwrap();
         let p = a.components[3].pose;
-        let want = [1.0 + 30f64.to_radians().cos() + 60f64.to_radians().cos(), 30f64.to_radians().sin() + 60f64.to_radians().sin(), 0.0];
+        let want = [
+            1.0 + 30f64.to_radians().cos() + 60f64.to_radians().cos(),
+            30f64.to_radians().sin() + 60f64.to_radians().sin(),
+            0.0,
+        ];
         for k in 0..3 {
-            assert!((p.translation[k] - want[k]).abs() < 1e-9, "{:?}", p.translation);
+            assert!(
+                (p.translation[k] - want[k]).abs() < 1e-9,
+                "{:?}",
+                p.translation
+            );
         }
     }
 }

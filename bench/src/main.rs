@@ -333,7 +333,12 @@ fn assembly(args: &[String]) -> Result<()> {
             other => bail!("unknown option {other}; usage: loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only]"),
         }
     }
-    let t = loci_bench::assembly::run_all(&sizes, reps, others, Some(&Path::new(env!("CARGO_MANIFEST_DIR"))));
+    let t = loci_bench::assembly::run_all(
+        &sizes,
+        reps,
+        others,
+        Some(&Path::new(env!("CARGO_MANIFEST_DIR"))),
+    );
     print!("{}", loci_bench::assembly::table(&t));
     Ok(())
 }

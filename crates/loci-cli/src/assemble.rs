@@ -27,8 +27,16 @@ pub fn run(
             outln!("{}", serde_json::to_string_pretty(&run)?);
         } else {
             let ids: Vec<&str> = asm.mates.iter().map(|m| m.id.as_str()).collect();
-            outln!("{}: stepped mode, {} passes, {}", file.display(), run.iterations.len(),
-                if run.converged { "converged" } else { "not converged" });
+            outln!(
+                "{}: stepped mode, {} passes, {}",
+                file.display(),
+                run.iterations.len(),
+                if run.converged {
+                    "converged"
+                } else {
+                    "not converged"
+                }
+            );
             for it in &run.iterations {
                 out!("pass {:>4}:", it.index);
                 for (id, e) in ids.iter().zip(&it.errors) {
@@ -41,14 +49,25 @@ pub fn run(
                         let q = p.rotation;
                         outln!(
                             "    {} at ({:.6}, {:.6}, {:.6}) rotation ({:.6}, {:.6}, {:.6}, {:.6})",
-                            c.name, t[0], t[1], t[2], q[0], q[1], q[2], q[3]
+                            c.name,
+                            t[0],
+                            t[1],
+                            t[2],
+                            q[0],
+                            q[1],
+                            q[2],
+                            q[3]
                         );
                     }
                 }
             }
         }
         write_out(&asm, output, svg)?;
-        return Ok(if run.converged { code::SOLVED } else { code::DID_NOT_CONVERGE });
+        return Ok(if run.converged {
+            code::SOLVED
+        } else {
+            code::DID_NOT_CONVERGE
+        });
     }
     let report = asm
         .solve()
@@ -75,7 +94,11 @@ fn write_out(
             .map(|k| {
                 let lo = t.iter().map(|v| v[k]).fold(f64::INFINITY, f64::min);
                 let hi = t.iter().map(|v| v[k]).fold(f64::NEG_INFINITY, f64::max);
-                if lo.is_finite() { hi - lo } else { 0.0 }
+                if lo.is_finite() {
+                    hi - lo
+                } else {
+                    0.0
+                }
             })
             .fold(0.0, f64::max);
         let size = if spread > 0.0 { spread / 10.0 } else { 1.0 };

@@ -31,12 +31,20 @@ fn unit(a: V3) -> V3 {
 }
 
 fn cross(a: V3, b: V3) -> V3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }
 
 /// Two unit vectors spanning the plane normal to unit `n`.
 fn basis(n: V3) -> (V3, V3) {
-    let h = if n[2].abs() < 0.9 { [0.0, 0.0, 1.0] } else { [0.0, 1.0, 0.0] };
+    let h = if n[2].abs() < 0.9 {
+        [0.0, 0.0, 1.0]
+    } else {
+        [0.0, 1.0, 0.0]
+    };
     let u = unit(cross(n, h));
     (u, cross(n, u))
 }
@@ -80,7 +88,10 @@ pub fn assembly_svg(asm: &Assembly, size: f64) -> String {
                 let pts = (0..=32)
                     .map(|k| {
                         let t = k as f64 / 32.0 * std::f64::consts::TAU;
-                        add(p, add(scale(u, radius * t.cos()), scale(v, radius * t.sin())))
+                        add(
+                            p,
+                            add(scale(u, radius * t.cos()), scale(v, radius * t.sin())),
+                        )
                     })
                     .collect();
                 shapes.push(Shape::Poly(pts, "#c70"));
@@ -92,8 +103,17 @@ pub fn assembly_svg(asm: &Assembly, size: f64) -> String {
     };
     for c in &asm.components {
         let o = c.pose.translation;
-        for (axis, colour) in [([1.0, 0.0, 0.0], "#d33"), ([0.0, 1.0, 0.0], "#3a3"), ([0.0, 0.0, 1.0], "#33d")] {
-            shapes.push(Shape::Line(o, add(o, scale(c.pose.direction(axis), size)), colour, 1.2));
+        for (axis, colour) in [
+            ([1.0, 0.0, 0.0], "#d33"),
+            ([0.0, 1.0, 0.0], "#3a3"),
+            ([0.0, 0.0, 1.0], "#33d"),
+        ] {
+            shapes.push(Shape::Line(
+                o,
+                add(o, scale(c.pose.direction(axis), size)),
+                colour,
+                1.2,
+            ));
         }
         shapes.push(Shape::Text(o, c.name.clone()));
         for (n, r) in &c.references {
@@ -132,7 +152,12 @@ pub fn assembly_svg(asm: &Assembly, size: f64) -> String {
             Shape::Dot(p, _) | Shape::Text(p, _) => pts.push(project(*p)),
         }
     }
-    let (mut x0, mut y0, mut x1, mut y1) = (f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY);
+    let (mut x0, mut y0, mut x1, mut y1) = (
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    );
     for (x, y) in &pts {
         x0 = x0.min(*x);
         y0 = y0.min(*y);
@@ -179,11 +204,17 @@ pub fn assembly_svg(asm: &Assembly, size: f64) -> String {
             }
             Shape::Dot(p, colour) => {
                 let (x, y) = map(*p);
-                let _ = writeln!(out, r#"<circle cx="{x:.2}" cy="{y:.2}" r="2.5" fill="{colour}"/>"#);
+                let _ = writeln!(
+                    out,
+                    r#"<circle cx="{x:.2}" cy="{y:.2}" r="2.5" fill="{colour}"/>"#
+                );
             }
             Shape::Text(p, t) => {
                 let (x, y) = map(*p);
-                let t = t.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;");
+                let t = t
+                    .replace('&', "&amp;")
+                    .replace('<', "&lt;")
+                    .replace('>', "&gt;");
                 let _ = writeln!(
                     out,
                     r##"<text x="{:.2}" y="{:.2}" font-family="sans-serif" font-size="12" fill="#222">{t}</text>"##,
@@ -207,14 +238,36 @@ mod tests {
         let mut asm = Assembly::new();
         asm.add_component(
             Component::new("a<b", Pose::IDENTITY)
-                .with("f", Reference::Face { point: [0.0; 3], normal: [0.0, 0.0, 1.0] })
-                .with("h", Reference::CircularEdge { center: [0.0; 3], axis: [0.0, 0.0, 1.0], radius: 1.0 })
-                .with("v", Reference::Vertex { point: [1.0, 0.0, 0.0] }),
+                .with(
+                    "f",
+                    Reference::Face {
+                        point: [0.0; 3],
+                        normal: [0.0, 0.0, 1.0],
+                    },
+                )
+                .with(
+                    "h",
+                    Reference::CircularEdge {
+                        center: [0.0; 3],
+                        axis: [0.0, 0.0, 1.0],
+                        radius: 1.0,
+                    },
+                )
+                .with(
+                    "v",
+                    Reference::Vertex {
+                        point: [1.0, 0.0, 0.0],
+                    },
+                ),
         )
         .unwrap();
         let svg = assembly_svg(&asm, 1.0);
         assert!(svg.starts_with("<svg") && svg.ends_with("</svg>\n"));
-        assert_eq!(svg.matches("<line").count(), 4, "three frame axes and the face's normal");
+        assert_eq!(
+            svg.matches("<line").count(),
+            4,
+            "three frame axes and the face's normal"
+        );
         assert_eq!(svg.matches("<polygon").count(), 2);
         assert_eq!(svg.matches("<circle").count(), 1);
         assert!(svg.contains(">a&lt;b</text>"));

@@ -7,7 +7,9 @@
 use super::component::Pose;
 use super::math::{self, V3};
 use super::prim::{Body, Prim, D, L, P};
-use crate::{Constraint, ConstraintKind as K, Entity, EntityId, ModelError, Param, ParamId, System};
+use crate::{
+    Constraint, ConstraintKind as K, Entity, EntityId, ModelError, Param, ParamId, System,
+};
 use std::collections::HashMap;
 
 /// Whether directions other than a body's z axis are written as lines from its origin
@@ -106,7 +108,11 @@ impl Builder<'_> {
         self.sys.add_param(Param::new(h, group, v))
     }
 
-    fn params<const N: usize>(&mut self, group: u32, v: [f64; N]) -> Result<[ParamId; N], ModelError> {
+    fn params<const N: usize>(
+        &mut self,
+        group: u32,
+        v: [f64; N],
+    ) -> Result<[ParamId; N], ModelError> {
         let mut out = [ParamId(0); N];
         for (o, x) in out.iter_mut().zip(v) {
             *o = self.param(group, x)?;
@@ -233,10 +239,7 @@ impl Builder<'_> {
     fn constraint(&mut self, mate: usize, c: Constraint) -> Result<(), ModelError> {
         let h = self.next_constraint;
         self.next_constraint += 1;
-        self.sys.add_constraint(Constraint {
-            h: h.into(),
-            ..c
-        })?;
+        self.sys.add_constraint(Constraint { h: h.into(), ..c })?;
         self.owner.insert(h, mate);
         Ok(())
     }
@@ -252,14 +255,18 @@ impl Builder<'_> {
                 let (p, (o, n)) = (self.point(&p)?, self.plane(&l)?);
                 self.constraint(
                     mate,
-                    new(K::ProjPtDistance).with_points(o.0, p.0).with_entities([n.0, 0, 0, 0]),
+                    new(K::ProjPtDistance)
+                        .with_points(o.0, p.0)
+                        .with_entities([n.0, 0, 0, 0]),
                 )
             }
             Prim::OnLine(p, l) => {
                 let (p, l) = (self.point(&p)?, self.line(&l)?);
                 self.constraint(
                     mate,
-                    new(K::PtOnLine).with_points(p.0, 0).with_entities([l.0, 0, 0, 0]),
+                    new(K::PtOnLine)
+                        .with_points(p.0, 0)
+                        .with_entities([l.0, 0, 0, 0]),
                 )
             }
             Prim::Parallel(a, b, _) => {
@@ -311,7 +318,10 @@ impl Builder<'_> {
                     d: math::unit(dir).unwrap_or(u),
                 })?;
                 let nb = self.direction(&b)?;
-                self.constraint(mate, new(K::Perpendicular).with_entities([na.0, nb.0, 0, 0]))
+                self.constraint(
+                    mate,
+                    new(K::Perpendicular).with_entities([na.0, nb.0, 0, 0]),
+                )
             }
         }
     }

@@ -32,13 +32,12 @@ pub(crate) fn resolve(
     };
     match &sel.component {
         Some(name) => {
-            let i = index
-                .get(name.as_str())
-                .copied()
-                .ok_or_else(|| AssemblyError::UnknownComponent {
+            let i = index.get(name.as_str()).copied().ok_or_else(|| {
+                AssemblyError::UnknownComponent {
                     mate: mate.into(),
                     component: name.clone(),
-                })?;
+                }
+            })?;
             let r = components[i]
                 .reference(&sel.reference)
                 .ok_or_else(|| missing(name))?;
@@ -291,8 +290,12 @@ pub(crate) fn compile(
                     ]
                 }
             }
-            (Line, Plane) => return Err(cx.unusable(&ra, "point or plane for a distance to a plane")),
-            (Plane, Line) => return Err(cx.unusable(&rb, "point or plane for a distance to a plane")),
+            (Line, Plane) => {
+                return Err(cx.unusable(&ra, "point or plane for a distance to a plane"))
+            }
+            (Plane, Line) => {
+                return Err(cx.unusable(&rb, "point or plane for a distance to a plane"))
+            }
         },
         MateKind::Parallel => vec![Prim::Parallel(cx.dir(&ra)?, cx.dir(&rb)?, flip)],
         MateKind::Perpendicular => vec![Prim::Perpendicular(cx.dir(&ra)?, cx.dir(&rb)?)],
@@ -315,7 +318,10 @@ pub(crate) fn compile(
             });
             vec![
                 Prim::Coincident(
-                    P { body: ra.body, p: t },
+                    P {
+                        body: ra.body,
+                        p: t,
+                    },
                     P {
                         body: rb.body,
                         p: [0.0; 3],
@@ -394,7 +400,12 @@ fn planes(
 }
 
 /// Line–line: collinear.
-fn collinear(cx: &Ctx, ra: &Resolved, rb: &Resolved, flip: bool) -> Result<Vec<Prim>, AssemblyError> {
+fn collinear(
+    cx: &Ctx,
+    ra: &Resolved,
+    rb: &Resolved,
+    flip: bool,
+) -> Result<Vec<Prim>, AssemblyError> {
     let (la, lb) = (cx.line(ra)?, cx.line(rb)?);
     Ok(vec![
         Prim::Parallel(la.dir(), lb.dir(), flip),
@@ -419,16 +430,23 @@ fn capture_zero(mate: &mut Mate, la: &L, lb: &L, poses: &[Pose]) -> (V3, V3) {
     if mate.kind == MateKind::Revolute {
         // A revolute's angle is zero where the two references' frames agree: the same
         // perpendicular of each axis, in each component's own frame.
-        let ua = *mate.persistent.axis.get_or_insert_with(|| math::perpendicular(la.d));
-        let ub = *mate.persistent.axis_b.get_or_insert_with(|| math::perpendicular(lb.d));
+        let ua = *mate
+            .persistent
+            .axis
+            .get_or_insert_with(|| math::perpendicular(la.d));
+        let ub = *mate
+            .persistent
+            .axis_b
+            .get_or_insert_with(|| math::perpendicular(lb.d));
         return (ua, ub);
     }
     let ua = *mate
         .persistent
         .axis
         .get_or_insert_with(|| math::perpendicular(la.d));
-    let ub = *mate.persistent.axis_b.get_or_insert_with(|| {
-        pose(lb.body).to_local_direction(pose(la.body).direction(ua))
-    });
+    let ub = *mate
+        .persistent
+        .axis_b
+        .get_or_insert_with(|| pose(lb.body).to_local_direction(pose(la.body).direction(ua)));
     (ua, ub)
 }

@@ -70,7 +70,10 @@ impl Pose {
     #[must_use]
     pub fn is_valid(&self) -> bool {
         let n: f64 = self.rotation.iter().map(|x| x * x).sum();
-        self.translation.iter().chain(&self.rotation).all(|x| x.is_finite())
+        self.translation
+            .iter()
+            .chain(&self.rotation)
+            .all(|x| x.is_finite())
             && (n - 1.0).abs() < 1e-9
     }
 
@@ -288,7 +291,9 @@ pub(crate) mod named {
         m.end()
     }
 
-    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(String, Reference)>, D::Error> {
+    pub fn deserialize<'de, D: Deserializer<'de>>(
+        d: D,
+    ) -> Result<Vec<(String, Reference)>, D::Error> {
         struct V;
         impl<'de> Visitor<'de> for V {
             type Value = Vec<(String, Reference)>;

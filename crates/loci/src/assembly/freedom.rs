@@ -18,11 +18,7 @@ pub(crate) fn motions(d: &Diagnosis, pp: &PoseParams, t: V3, q: [f64; 4]) -> (us
             let Some(disp) = d.displacement(e, i) else {
                 continue;
             };
-            let get = |p: crate::ParamId| {
-                disp.iter()
-                    .find(|(h, _)| *h == p)
-                    .map_or(0.0, |x| x.1)
-            };
+            let get = |p: crate::ParamId| disp.iter().find(|(h, _)| *h == p).map_or(0.0, |x| x.1);
             let dt = pp.translation.map(get);
             let dq = pp.rotation.map(get);
             // dq = 1/2 w q  =>  w = 2 dq q*.
@@ -109,7 +105,10 @@ fn describe(basis: &[[f64; 6]], t: V3) -> Vec<String> {
     let mut words = Vec::new();
     match translations.len() {
         0 => {}
-        1 => words.push(format!("slides along {}", vec_words(canonical(translations[0])))),
+        1 => words.push(format!(
+            "slides along {}",
+            vec_words(canonical(translations[0]))
+        )),
         2 => words.push(format!(
             "slides in the plane normal to {}",
             vec_words(canonical(math::cross(translations[0], translations[1])))
@@ -154,7 +153,10 @@ fn describe(basis: &[[f64; 6]], t: V3) -> Vec<String> {
         }
         k => match common_centre(&rot, t) {
             Some(p) if k >= 3 => words.push(format!("turns freely about {}", vec_words(p))),
-            Some(p) => words.push(format!("turns in 2 independent ways about {}", vec_words(p))),
+            Some(p) => words.push(format!(
+                "turns in 2 independent ways about {}",
+                vec_words(p)
+            )),
             None => words.push(format!("turns in {k} independent ways")),
         },
     }

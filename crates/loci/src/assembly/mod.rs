@@ -97,7 +97,11 @@ pub struct Assembly {
     #[serde(default)]
     pub components: Vec<Component>,
     /// References fixed in the world, attached to no component.
-    #[serde(default, with = "component::named", skip_serializing_if = "Vec::is_empty")]
+    #[serde(
+        default,
+        with = "component::named",
+        skip_serializing_if = "Vec::is_empty"
+    )]
     pub world: Vec<(String, Reference)>,
     /// The mates and joints, in order.
     #[serde(default)]
@@ -219,8 +223,11 @@ impl Assembly {
     fn compile_all(&mut self) -> Vec<Result<Vec<Prim>, AssemblyError>> {
         let poses = self.poses();
         let (components, world) = (&self.components, &self.world);
-        let index: std::collections::HashMap<&str, usize> =
-            components.iter().enumerate().map(|(i, c)| (c.name.as_str(), i)).collect();
+        let index: std::collections::HashMap<&str, usize> = components
+            .iter()
+            .enumerate()
+            .map(|(i, c)| (c.name.as_str(), i))
+            .collect();
         let is_angle = |m: &Mate| matches!(m.kind, MateKind::Angle { .. });
         let mut out: Vec<Result<Vec<Prim>, AssemblyError>> = self
             .mates
@@ -238,7 +245,11 @@ impl Assembly {
             std::collections::HashMap::new();
         for p in out.iter().flatten().flatten() {
             if let Prim::Parallel(a, b, _) = p {
-                let key = if a.body <= b.body { (a.body, b.body) } else { (b.body, a.body) };
+                let key = if a.body <= b.body {
+                    (a.body, b.body)
+                } else {
+                    (b.body, a.body)
+                };
                 hints.entry(key).or_default().push((*a, *b));
             }
         }
@@ -311,7 +322,15 @@ impl Assembly {
         }
         let mut poses = start.clone();
         self.prealign(&prims, &mut poses, &movable);
-        let built = build::build(&poses, &self.components.iter().map(|c| c.grounded).collect::<Vec<_>>(), &prims)?;
+        let built = build::build(
+            &poses,
+            &self
+                .components
+                .iter()
+                .map(|c| c.grounded)
+                .collect::<Vec<_>>(),
+            &prims,
+        )?;
         let mut sys = built.sys;
         let group = GroupId(build::FREE);
         let has_free = sys.params().iter().any(|p| p.group == group);
@@ -349,7 +368,11 @@ impl Assembly {
                 d.redundant.iter().map(|r| sets(&r.members)).collect(),
             ),
             None => {
-                let failed: Vec<Member> = report.failed.iter().map(|&c| Member::Constraint(c)).collect();
+                let failed: Vec<Member> = report
+                    .failed
+                    .iter()
+                    .map(|&c| Member::Constraint(c))
+                    .collect();
                 match report.outcome {
                     Outcome::Inconsistent => (vec![sets(&failed)], Vec::new()),
                     Outcome::RedundantOkay => (Vec::new(), vec![sets(&failed)]),
@@ -357,8 +380,12 @@ impl Assembly {
                 }
             }
         };
-        let in_conflict: Vec<bool> = (0..ids.len()).map(|i| conflicts.iter().any(|s| s.contains(&i))).collect();
-        let in_redundant: Vec<bool> = (0..ids.len()).map(|i| redundant.iter().any(|s| s.contains(&i))).collect();
+        let in_conflict: Vec<bool> = (0..ids.len())
+            .map(|i| conflicts.iter().any(|s| s.contains(&i)))
+            .collect();
+        let in_redundant: Vec<bool> = (0..ids.len())
+            .map(|i| redundant.iter().any(|s| s.contains(&i)))
+            .collect();
 
         // Mates, measured where the components end.
         let mut mates = Vec::new();
@@ -376,15 +403,18 @@ impl Assembly {
             match c {
                 Err(e) => {
                     r.status = match e {
-                        AssemblyError::Unusable { needed: "direction", .. }
+                        AssemblyError::Unusable {
+                            needed: "direction",
+                            ..
+                        } if matches!(m.kind, MateKind::Angle { .. }) => MateStatus::NoDirection,
+                        AssemblyError::SameComponent { .. }
                             if matches!(m.kind, MateKind::Angle { .. }) =>
                         {
-                            MateStatus::NoDirection
-                        }
-                        AssemblyError::SameComponent { .. } if matches!(m.kind, MateKind::Angle { .. }) => {
                             MateStatus::SameComponent
                         }
-                        AssemblyError::NotAttached { .. } if matches!(m.kind, MateKind::Angle { .. }) => {
+                        AssemblyError::NotAttached { .. }
+                            if matches!(m.kind, MateKind::Angle { .. }) =>
+                        {
                             MateStatus::NotAttached
                         }
                         _ => MateStatus::InvalidSelection,
@@ -429,7 +459,9 @@ impl Assembly {
         for (i, c) in self.components.iter_mut().enumerate() {
             c.pose = poses[i];
             let (dof, motions) = match (&diag, built.poses[i]) {
-                (Some(d), Some(pp)) => freedom::motions(d, &pp, poses[i].translation, poses[i].rotation),
+                (Some(d), Some(pp)) => {
+                    freedom::motions(d, &pp, poses[i].translation, poses[i].rotation)
+                }
                 _ => (0, Vec::new()),
             };
             components.push(ComponentReport {
@@ -521,7 +553,8 @@ impl Assembly {
                         .map(|x| {
                             let e = x.error(&w);
                             let (a, b) = x.bodies();
-                            let can = a.is_some_and(|i| movable[i]) || b.is_some_and(|i| movable[i]);
+                            let can =
+                                a.is_some_and(|i| movable[i]) || b.is_some_and(|i| movable[i]);
                             if can && e > if x.is_angular() { atol } else { tol } {
                                 all = false;
                             }
@@ -649,7 +682,12 @@ fn measure(m: &mut Mate, prims: &[Prim], poses: &[Pose], r: &mut MateReport) {
             Prim::InPlane(p, l) => Some(prim::plane_offset(&w, p, l)),
             _ => None,
         }),
-        MateKind::Revolute => match (prims.first(), prims.get(1), m.persistent.axis, m.persistent.axis_b) {
+        MateKind::Revolute => match (
+            prims.first(),
+            prims.get(1),
+            m.persistent.axis,
+            m.persistent.axis_b,
+        ) {
             (Some(Prim::Coincident(..)), Some(Prim::Parallel(da, db, _)), Some(ua), Some(ub)) => {
                 let n = w.dir(da);
                 let ua = w.pose(da.body).direction(ua);

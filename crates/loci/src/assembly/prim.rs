@@ -68,12 +68,7 @@ pub(crate) enum Prim {
     SameOrientation(Body, Body, Q4),
     /// The signed angle from `a` to `b` about the axis (a unit vector in `a`'s body frame,
     /// normal to `a`) is the target in radians (1).
-    SignedAngle {
-        a: D,
-        b: D,
-        axis: V3,
-        target: f64,
-    },
+    SignedAngle { a: D, b: D, axis: V3, target: f64 },
 }
 
 /// The world poses of the bodies: components by index, the world at the identity.
@@ -152,7 +147,9 @@ impl Prim {
             Prim::Perpendicular(a, b) => {
                 (math::angle_between(w.dir(a), w.dir(b)) - std::f64::consts::FRAC_PI_2).abs()
             }
-            Prim::PtPtDistance(a, b, d) => (math::norm(math::sub(w.point(b), w.point(a))) - d).abs(),
+            Prim::PtPtDistance(a, b, d) => {
+                (math::norm(math::sub(w.point(b), w.point(a))) - d).abs()
+            }
             Prim::PtPlaneDistance(p, l, d) => (plane_offset(w, p, l) - d).abs(),
             Prim::PtLineDistance(p, l, d) => (line_offset(w, p, l) - d).abs(),
             Prim::SameOrientation(a, b, rel) => {

@@ -88,7 +88,9 @@ pub(crate) fn step_prims(
                 let u = math::cross(n, da);
                 let phi = signed_angle(da, db, n);
                 let delta = wrap(phi - target);
-                let at = |angle: f64| math::add(math::scale(da, angle.cos()), math::scale(u, angle.sin()));
+                let at = |angle: f64| {
+                    math::add(math::scale(da, angle.cos()), math::scale(u, angle.sin()))
+                };
                 // The seed's split: half of the correction each, or all on the movable one.
                 let (ta, tb) = match (ma, mb) {
                     (true, true) => (delta / 2.0, phi - delta / 2.0),
@@ -147,7 +149,11 @@ pub(crate) fn step_prims(
                 Some(math::scale(w.dir(&l.dir()), d - plane_offset(&w, p, l)))
             }
             Prim::OnLine(p, l) | Prim::PtLineDistance(p, l, _) => {
-                let want = if let Prim::PtLineDistance(_, _, d) = prim { *d } else { 0.0 };
+                let want = if let Prim::PtLineDistance(_, _, d) = prim {
+                    *d
+                } else {
+                    0.0
+                };
                 let dir = w.dir(&l.dir());
                 let rel = math::sub(w.point(p), w.point(&l.point()));
                 let radial = math::sub(rel, math::scale(dir, math::dot(rel, dir)));

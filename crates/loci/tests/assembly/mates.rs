@@ -46,19 +46,40 @@ fn coincident_point_point_removes_three() {
 
 #[test]
 fn coincident_point_plane_removes_one() {
-    check(K::Coincident, "top", "corner", false, at([0.3, 0.2, 1.0]), 5);
+    check(
+        K::Coincident,
+        "top",
+        "corner",
+        false,
+        at([0.3, 0.2, 1.0]),
+        5,
+    );
 }
 
 #[test]
 fn coincident_point_line_removes_two() {
-    check(K::Coincident, "edge", "corner", false, at([0.7, 0.0, 0.0]), 4);
+    check(
+        K::Coincident,
+        "edge",
+        "corner",
+        false,
+        at([0.7, 0.0, 0.0]),
+        4,
+    );
 }
 
 #[test]
 fn coincident_plane_plane_removes_three_aligned_or_flipped() {
     check(K::Coincident, "top", "top", false, at([0.4, -0.2, 0.0]), 3);
     // B's bottom (normal -z) against A's top (normal +z): opposed.
-    check(K::Coincident, "top", "bottom", true, at([0.4, -0.2, 1.0]), 3);
+    check(
+        K::Coincident,
+        "top",
+        "bottom",
+        true,
+        at([0.4, -0.2, 1.0]),
+        3,
+    );
 }
 
 #[test]
@@ -68,27 +89,62 @@ fn coincident_line_line_is_collinear() {
 
 #[test]
 fn distance_point_point_removes_one() {
-    check(K::Distance { value: 2.0 }, "corner", "corner", false, at([0.0, 2.0, 0.0]), 5);
+    check(
+        K::Distance { value: 2.0 },
+        "corner",
+        "corner",
+        false,
+        at([0.0, 2.0, 0.0]),
+        5,
+    );
 }
 
 #[test]
 fn distance_point_plane_removes_one() {
-    check(K::Distance { value: 1.5 }, "top", "corner", false, at([0.0, 0.0, 2.5]), 5);
+    check(
+        K::Distance { value: 1.5 },
+        "top",
+        "corner",
+        false,
+        at([0.0, 0.0, 2.5]),
+        5,
+    );
 }
 
 #[test]
 fn distance_plane_plane_keeps_them_parallel() {
-    check(K::Distance { value: 3.0 }, "top", "top", false, at([0.1, 0.0, 3.0]), 3);
+    check(
+        K::Distance { value: 3.0 },
+        "top",
+        "top",
+        false,
+        at([0.1, 0.0, 3.0]),
+        3,
+    );
 }
 
 #[test]
 fn distance_line_line_keeps_them_parallel() {
-    check(K::Distance { value: 2.0 }, "edge", "edge", false, at([0.3, 2.0, 0.0]), 3);
+    check(
+        K::Distance { value: 2.0 },
+        "edge",
+        "edge",
+        false,
+        at([0.3, 2.0, 0.0]),
+        3,
+    );
 }
 
 #[test]
 fn distance_point_line_removes_one() {
-    check(K::Distance { value: 2.0 }, "edge", "corner", false, at([0.3, 0.0, 2.0]), 5);
+    check(
+        K::Distance { value: 2.0 },
+        "edge",
+        "corner",
+        false,
+        at([0.3, 0.0, 2.0]),
+        5,
+    );
 }
 
 #[test]
@@ -99,7 +155,14 @@ fn parallel_removes_two_either_way() {
 
 #[test]
 fn perpendicular_removes_one() {
-    check(K::Perpendicular, "axis", "edge", false, at([1.0, 2.0, 3.0]), 5);
+    check(
+        K::Perpendicular,
+        "axis",
+        "edge",
+        false,
+        at([1.0, 2.0, 3.0]),
+        5,
+    );
 }
 
 #[test]
@@ -110,7 +173,14 @@ fn angle_removes_one() {
 
 #[test]
 fn touch_align_faces_are_opposed_and_coplanar() {
-    check(K::TouchAlign, "top", "bottom", false, at([0.2, 0.1, 1.0]), 3);
+    check(
+        K::TouchAlign,
+        "top",
+        "bottom",
+        false,
+        at([0.2, 0.1, 1.0]),
+        3,
+    );
     check(K::TouchAlign, "edge", "edge", false, at([0.6, 0.0, 0.0]), 2);
     check(K::TouchAlign, "corner", "corner", false, Pose::IDENTITY, 3);
 }
@@ -123,12 +193,26 @@ fn concentric_removes_four() {
 #[test]
 fn fixed_and_fastened_remove_six() {
     check(K::Fixed, "frame", "frame", false, at([1.0, 2.0, 3.0]), 0);
-    check(K::Fastened, "frame", "frame", false, Pose::from_axis_angle([1.0, 0.0, 0.0], [1.0, 1.0, 0.0], 40.0), 0);
+    check(
+        K::Fastened,
+        "frame",
+        "frame",
+        false,
+        Pose::from_axis_angle([1.0, 0.0, 0.0], [1.0, 1.0, 0.0], 40.0),
+        0,
+    );
 }
 
 #[test]
 fn revolute_leaves_one_rotation() {
-    check(K::Revolute, "axis", "axis", false, Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 20.0), 1);
+    check(
+        K::Revolute,
+        "axis",
+        "axis",
+        false,
+        Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 20.0),
+        1,
+    );
 }
 
 #[test]
@@ -138,12 +222,26 @@ fn slider_leaves_one_translation() {
 
 #[test]
 fn cylindrical_leaves_slide_and_turn() {
-    check(K::Cylindrical, "axis", "axis", false, at([0.0, 0.0, 0.5]), 2);
+    check(
+        K::Cylindrical,
+        "axis",
+        "axis",
+        false,
+        at([0.0, 0.0, 0.5]),
+        2,
+    );
 }
 
 #[test]
 fn ball_leaves_three_rotations() {
-    check(K::Ball, "corner", "corner", false, Pose::from_axis_angle([0.0; 3], [1.0, 0.0, 0.0], 10.0), 3);
+    check(
+        K::Ball,
+        "corner",
+        "corner",
+        false,
+        Pose::from_axis_angle([0.0; 3], [1.0, 0.0, 0.0], 10.0),
+        3,
+    );
 }
 
 #[test]
@@ -159,7 +257,13 @@ fn pin_slot_leaves_slide_and_turn() {
 
 #[test]
 fn a_grounded_component_never_moves_whatever_the_mates_ask() {
-    let (mut asm, _) = pair(K::Distance { value: 5.0 }, "corner", "corner", false, Pose::IDENTITY);
+    let (mut asm, _) = pair(
+        K::Distance { value: 5.0 },
+        "corner",
+        "corner",
+        false,
+        Pose::IDENTITY,
+    );
     asm.components[1].grounded = true;
     let r = asm.solve().unwrap();
     assert_eq!(r.mates[0].status, MateStatus::Blocked, "{r}");

@@ -5,32 +5,57 @@ use loci::assembly::{Assembly, Mate, MateKind as K, MateStatus, Pose, Selection}
 
 fn two(pose: Pose) -> Assembly {
     let mut asm = Assembly::new();
-    asm.add_component(parts("g", Pose::IDENTITY).grounded()).unwrap();
+    asm.add_component(parts("g", Pose::IDENTITY).grounded())
+        .unwrap();
     asm.add_component(parts("b", pose)).unwrap();
     asm
 }
 
 fn mate(asm: &mut Assembly, kind: K, ra: &str, rb: &str) -> String {
-    asm.add_mate(Mate::new(kind, Selection::on("g", ra), Selection::on("b", rb))).unwrap()
+    asm.add_mate(Mate::new(
+        kind,
+        Selection::on("g", ra),
+        Selection::on("b", rb),
+    ))
+    .unwrap()
 }
 
 #[test]
 fn a_hinge_has_exactly_one_rotation_about_its_axis() {
     let mut asm = Assembly::new();
-    let hinge = loci::assembly::Reference::Axis { point: [10.0, 0.0, 0.0], direction: [0.0, 0.0, 1.0] };
-    asm.add_component(parts("g", Pose::IDENTITY).grounded().with("hinge", hinge.clone())).unwrap();
+    let hinge = loci::assembly::Reference::Axis {
+        point: [10.0, 0.0, 0.0],
+        direction: [0.0, 0.0, 1.0],
+    };
     asm.add_component(
-        parts("door", Pose::from_axis_angle([0.2, -0.1, 0.3], [0.1, 0.0, 1.0], 12.0)).with("hinge", hinge),
+        parts("g", Pose::IDENTITY)
+            .grounded()
+            .with("hinge", hinge.clone()),
     )
     .unwrap();
-    asm.add_mate(Mate::new(K::Revolute, Selection::on("g", "hinge"), Selection::on("door", "hinge")))
-        .unwrap();
+    asm.add_component(
+        parts(
+            "door",
+            Pose::from_axis_angle([0.2, -0.1, 0.3], [0.1, 0.0, 1.0], 12.0),
+        )
+        .with("hinge", hinge),
+    )
+    .unwrap();
+    asm.add_mate(Mate::new(
+        K::Revolute,
+        Selection::on("g", "hinge"),
+        Selection::on("door", "hinge"),
+    ))
+    .unwrap();
     let r = asm.solve().unwrap();
     assert!(r.all_hold(), "{r}");
     assert_eq!(r.dof, 1);
     let door = r.component("door").unwrap();
     assert_eq!(door.dof, 1);
-    assert_eq!(door.motions, ["rotates about axis (0, 0, 1) through (10, 0, 0)"]);
+    assert_eq!(
+        door.motions,
+        ["rotates about axis (0, 0, 1) through (10, 0, 0)"]
+    );
     assert_eq!(r.component("g").unwrap().dof, 0);
 }
 
@@ -39,12 +64,18 @@ fn motions_read_as_words() {
     let mut asm = two(Pose::new([0.7, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]));
     mate(&mut asm, K::Slider, "edge", "edge");
     let r = asm.solve().unwrap();
-    assert_eq!(r.component("b").unwrap().motions, ["slides along (1, 0, 0)"]);
+    assert_eq!(
+        r.component("b").unwrap().motions,
+        ["slides along (1, 0, 0)"]
+    );
 
     let mut asm = two(Pose::new([2.0, 3.0, 4.0], [1.0, 0.0, 0.0, 0.0]));
     mate(&mut asm, K::Ball, "corner", "corner");
     let r = asm.solve().unwrap();
-    assert_eq!(r.component("b").unwrap().motions, ["turns freely about (0, 0, 0)"]);
+    assert_eq!(
+        r.component("b").unwrap().motions,
+        ["turns freely about (0, 0, 0)"]
+    );
 
     let mut asm = two(Pose::new([0.3, 0.3, 0.0], [1.0, 0.0, 0.0, 0.0]));
     mate(&mut asm, K::Planar, "top", "top");
@@ -52,20 +83,30 @@ fn motions_read_as_words() {
     let b = r.component("b").unwrap();
     assert_eq!(b.dof, 3);
     assert_eq!(b.motions[0], "slides in the plane normal to (0, 0, 1)");
-    assert!(b.motions[1].starts_with("rotates about axis (0, 0, 1)"), "{:?}", b.motions);
+    assert!(
+        b.motions[1].starts_with("rotates about axis (0, 0, 1)"),
+        "{:?}",
+        b.motions
+    );
 
     let mut asm = two(Pose::new([0.0, 0.0, 0.5], [1.0, 0.0, 0.0, 0.0]));
     mate(&mut asm, K::Cylindrical, "axis", "axis");
     let r = asm.solve().unwrap();
     assert_eq!(
         r.component("b").unwrap().motions,
-        ["slides along (0, 0, 1)", "rotates about axis (0, 0, 1) through (0, 0, 0)"]
+        [
+            "slides along (0, 0, 1)",
+            "rotates about axis (0, 0, 1) through (0, 0, 0)"
+        ]
     );
 
     let asm_free = &mut two(Pose::new([1.0, 2.0, 3.0], [1.0, 0.0, 0.0, 0.0]));
     let r = asm_free.solve().unwrap();
     assert_eq!(r.dof, 6);
-    assert_eq!(r.component("b").unwrap().motions, ["moves freely in space", "turns freely about (1, 2, 3)"]);
+    assert_eq!(
+        r.component("b").unwrap().motions,
+        ["moves freely in space", "turns freely about (1, 2, 3)"]
+    );
 }
 
 #[test]
@@ -82,7 +123,10 @@ fn two_fighting_mates_are_named_and_nothing_else() {
     assert_ne!(r.mate(&hinge).unwrap().status, MateStatus::Conflicting);
     assert_eq!(asm.components[0].pose, grounded_before);
     let text = r.to_string();
-    assert!(text.contains("conflict: {DIST1, DIST2} cannot all hold"), "{text}");
+    assert!(
+        text.contains("conflict: {DIST1, DIST2} cannot all hold"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -93,7 +137,10 @@ fn a_repeated_mate_is_redundant() {
     let r = asm.solve().unwrap();
     assert!(r.all_hold(), "{r}");
     assert_eq!(r.redundant.len(), 1, "{r}");
-    assert!(r.mates.iter().any(|m| m.status == MateStatus::Redundant), "{r}");
+    assert!(
+        r.mates.iter().any(|m| m.status == MateStatus::Redundant),
+        "{r}"
+    );
 }
 
 #[test]
@@ -102,15 +149,35 @@ fn selections_that_cannot_serve_are_named() {
     let p = mate(&mut asm, K::Parallel, "corner", "axis");
     let c = mate(&mut asm, K::Concentric, "top", "axis");
     let u = asm
-        .add_mate(Mate::new(K::Coincident, Selection::on("g", "nothing"), Selection::on("b", "corner")))
+        .add_mate(Mate::new(
+            K::Coincident,
+            Selection::on("g", "nothing"),
+            Selection::on("b", "corner"),
+        ))
         .unwrap();
     let r = asm.solve().unwrap();
     for id in [&p, &c, &u] {
-        assert_eq!(r.mate(id).unwrap().status, MateStatus::InvalidSelection, "{r}");
+        assert_eq!(
+            r.mate(id).unwrap().status,
+            MateStatus::InvalidSelection,
+            "{r}"
+        );
     }
-    assert!(r.mate(&p).unwrap().message.contains("g.corner is a vertex, which gives no direction"));
-    assert!(r.mate(&c).unwrap().message.contains("g.top is a face, which gives no line"));
-    assert!(r.mate(&u).unwrap().message.contains("`g` has no reference `nothing`"));
+    assert!(r
+        .mate(&p)
+        .unwrap()
+        .message
+        .contains("g.corner is a vertex, which gives no direction"));
+    assert!(r
+        .mate(&c)
+        .unwrap()
+        .message
+        .contains("g.top is a face, which gives no line"));
+    assert!(r
+        .mate(&u)
+        .unwrap()
+        .message
+        .contains("`g` has no reference `nothing`"));
 }
 
 #[test]
@@ -131,15 +198,26 @@ fn joint_limits_are_reported_when_violated() {
     let mut asm = two(Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 20.0));
     let id = asm
         .add_mate(
-            Mate::new(K::Revolute, Selection::on("g", "axis"), Selection::on("b", "axis")).with_limits(-30.0, 30.0),
+            Mate::new(
+                K::Revolute,
+                Selection::on("g", "axis"),
+                Selection::on("b", "axis"),
+            )
+            .with_limits(-30.0, 30.0),
         )
         .unwrap();
     let r = asm.solve().unwrap();
     let m = r.mate(&id).unwrap();
-    assert!((m.value.unwrap() - 20.0).abs() < 1e-9 && !m.limit_violated, "{r}");
+    assert!(
+        (m.value.unwrap() - 20.0).abs() < 1e-9 && !m.limit_violated,
+        "{r}"
+    );
     asm.components[1].pose = Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 50.0);
     let r = asm.solve().unwrap();
     let m = r.mate(&id).unwrap();
     assert!((m.value.unwrap() - 50.0).abs() < 1e-9, "{r}");
-    assert!(m.limit_violated && m.message.contains("joint limit [-30, 30] violated"), "{r}");
+    assert!(
+        m.limit_violated && m.message.contains("joint limit [-30, 30] violated"),
+        "{r}"
+    );
 }

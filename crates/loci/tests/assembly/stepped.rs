@@ -5,14 +5,31 @@ use loci::assembly::{Assembly, Mate, MateKind as K, Pose, Selection};
 
 fn hinge_with_angle() -> Assembly {
     let mut asm = Assembly::new();
-    asm.add_component(parts("g", Pose::IDENTITY).grounded()).unwrap();
-    asm.add_component(parts("b", Pose::from_axis_angle([0.2, 0.1, -0.1], [0.0, 0.1, 1.0], 70.0))).unwrap();
-    asm.add_mate(Mate::new(K::Coincident, Selection::on("g", "corner"), Selection::on("b", "corner")))
+    asm.add_component(parts("g", Pose::IDENTITY).grounded())
         .unwrap();
-    asm.add_mate(Mate::new(K::Parallel, Selection::on("g", "axis"), Selection::on("b", "axis")))
-        .unwrap();
-    asm.add_mate(Mate::new(K::Angle { degrees: 30.0 }, Selection::on("g", "edge"), Selection::on("b", "edge")))
-        .unwrap();
+    asm.add_component(parts(
+        "b",
+        Pose::from_axis_angle([0.2, 0.1, -0.1], [0.0, 0.1, 1.0], 70.0),
+    ))
+    .unwrap();
+    asm.add_mate(Mate::new(
+        K::Coincident,
+        Selection::on("g", "corner"),
+        Selection::on("b", "corner"),
+    ))
+    .unwrap();
+    asm.add_mate(Mate::new(
+        K::Parallel,
+        Selection::on("g", "axis"),
+        Selection::on("b", "axis"),
+    ))
+    .unwrap();
+    asm.add_mate(Mate::new(
+        K::Angle { degrees: 30.0 },
+        Selection::on("g", "edge"),
+        Selection::on("b", "edge"),
+    ))
+    .unwrap();
     asm
 }
 
@@ -22,7 +39,10 @@ fn every_iteration_is_reported_with_poses_and_errors() {
     let run = asm.solve_stepped().unwrap();
     assert!(run.converged, "{} passes", run.iterations.len());
     // 40 degrees to turn, at most 10 per pass.
-    assert!(run.iterations.len() >= 4, "capped steps take several passes");
+    assert!(
+        run.iterations.len() >= 4,
+        "capped steps take several passes"
+    );
     for (i, it) in run.iterations.iter().enumerate() {
         assert_eq!(it.index, i + 1);
         assert_eq!(it.poses.len(), 2);

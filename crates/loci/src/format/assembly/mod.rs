@@ -151,11 +151,16 @@ mod tests {
             Err(AssemblyFormatError::Version(7))
         );
         let zero = DOOR.replace("[2, 0, 0, 0]", "[0, 0, 0, 0]");
-        assert_eq!(read(&zero), Err(AssemblyFormatError::Rotation("door".into())));
+        assert_eq!(
+            read(&zero),
+            Err(AssemblyFormatError::Rotation("door".into()))
+        );
         let twice = DOOR.replace("\"name\": \"door\"", "\"name\": \"frame\"");
         assert!(matches!(
             read(&twice),
-            Err(AssemblyFormatError::Invalid(AssemblyError::DuplicateComponent(_)))
+            Err(AssemblyFormatError::Invalid(
+                AssemblyError::DuplicateComponent(_)
+            ))
         ));
     }
 }
