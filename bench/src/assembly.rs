@@ -138,7 +138,7 @@ pub fn four_bar(seed: u64) -> Assembly {
     let dir = [d[0] / len, d[1] / len, d[2] / len];
     let q = {
         let (w, x, y, z) = (1.0 + dir[0], 0.0, -dir[2], dir[1]);
-        let n = (w * w + x * x + y * y + z * z as f64).sqrt();
+        let n = (w * w + x * x + y * y + z * z).sqrt();
         [w / n, x / n, y / n, z / n]
     };
     let mut asm = Assembly::new();
@@ -497,12 +497,8 @@ mod tests {
             30f64.to_radians().sin() + 60f64.to_radians().sin(),
             0.0,
         ];
-        for k in 0..3 {
-            assert!(
-                (p.translation[k] - want[k]).abs() < 1e-9,
-                "{:?}",
-                p.translation
-            );
+        for (got, want) in p.translation.iter().zip(want) {
+            assert!((got - want).abs() < 1e-9, "{:?}", p.translation);
         }
     }
 }

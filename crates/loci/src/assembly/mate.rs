@@ -127,7 +127,7 @@ impl MateKind {
         }
     }
 
-    /// The snake_case name.
+    /// The `snake_case` name.
     #[must_use]
     pub fn name(&self) -> &'static str {
         match self {

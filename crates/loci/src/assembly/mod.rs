@@ -303,7 +303,7 @@ impl Assembly {
         };
         let holds_before: Vec<bool> = compiled
             .iter()
-            .map(|c| c.as_ref().map_or(false, |p| err_of(p, &start).1))
+            .map(|c| c.as_ref().is_ok_and(|p| err_of(p, &start).1))
             .collect();
         let active = |prims: &[Prim]| {
             prims.iter().any(|p| {

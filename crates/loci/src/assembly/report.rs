@@ -35,7 +35,7 @@ pub enum MateStatus {
 }
 
 impl MateStatus {
-    /// The snake_case name.
+    /// The `snake_case` name.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
