@@ -221,3 +221,74 @@ fn joint_limits_are_reported_when_violated() {
         "{r}"
     );
 }
+
+#[test]
+fn bad_input_gives_typed_errors_not_panics() {
+    use loci::assembly::{AssemblyError, Component, Reference};
+    let mut asm = Assembly::new();
+    let nan = Pose {
+        translation: [f64::NAN, 0.0, 0.0],
+        rotation: [1.0, 0.0, 0.0, 0.0],
+    };
+    assert_eq!(
+        asm.add_component(Component::new("x", nan)),
+        Err(AssemblyError::BadPose("x".into()))
+    );
+    let bad_ref = Component::new("y", Pose::IDENTITY).with(
+        "v",
+        Reference::Vertex {
+            point: [f64::INFINITY, 0.0, 0.0],
+        },
+    );
+    assert!(matches!(
+        asm.add_component(bad_ref),
+        Err(AssemblyError::BadReference { .. })
+    ));
+    // A zero normal gives no direction; a NaN distance is no distance; unknown names are named.
+    let mut asm = two(Pose::IDENTITY);
+    asm.components[1].references.push((
+        "flat".into(),
+        Reference::Face {
+            point: [0.0; 3],
+            normal: [0.0; 3],
+        },
+    ));
+    let z = mate(&mut asm, K::Parallel, "top", "flat");
+    let d = mate(
+        &mut asm,
+        K::Distance { value: f64::NAN },
+        "corner",
+        "corner",
+    );
+    let n = mate(&mut asm, K::Distance { value: -1.0 }, "corner", "corner");
+    let c = asm
+        .add_mate(Mate::new(
+            K::Ball,
+            Selection::on("nobody", "corner"),
+            Selection::on("b", "corner"),
+        ))
+        .unwrap();
+    let r = asm.solve().unwrap();
+    for id in [&z, &d, &n, &c] {
+        assert_eq!(
+            r.mate(id).unwrap().status,
+            MateStatus::InvalidSelection,
+            "{r}"
+        );
+    }
+    assert!(r
+        .mate(&c)
+        .unwrap()
+        .message
+        .contains("component `nobody` does not exist"));
+    assert!(r.mate(&n).unwrap().message.contains("zero or more"));
+    // Options are checked.
+    asm.options.tolerance = -1.0;
+    assert!(matches!(
+        asm.solve(),
+        Err(AssemblyError::BadOption {
+            name: "tolerance",
+            ..
+        })
+    ));
+}
