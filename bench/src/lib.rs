@@ -6,6 +6,7 @@
 //! solver in a worker process with a time limit ([`run`]), checks every answer's residuals
 //! itself ([`check`]), and writes a markdown table and an SVG plot ([`report`]).
 
+pub mod assembly;
 pub mod check;
 pub mod compare;
 pub mod generate;

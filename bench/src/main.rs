@@ -6,6 +6,7 @@
 //! loci-bench worker SOLVER PROBLEM.json REPS BUDGET_S OUT.json
 //! loci-bench emit FAMILY VARIANT SIZE DIR
 //! loci-bench report DIR
+//! loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only]
 //! ```
 
 use anyhow::{bail, Context, Result};
@@ -42,6 +43,7 @@ fn real_main() -> Result<()> {
         Some("worker") => return worker(&args[1..]),
         Some("emit") => return emit(&args[1..]),
         Some("report") => return rerender(&args[1..]),
+        Some("assembly") => return assembly(&args[1..]),
         _ => {}
     }
     let mut quick = false;
@@ -308,4 +310,35 @@ fn today_utc() -> String {
     let m = if mp < 10 { mp + 3 } else { mp - 9 };
     let y = yoe + era * 400 + i64::from(m <= 2);
     format!("{y:04}-{m:02}-{d:02}")
+}
+
+/// `loci-bench assembly`: the assembly benchmark, printed as a markdown table.
+fn assembly(args: &[String]) -> Result<()> {
+    let mut sizes = vec![10, 100, 1_000, 10_000];
+    let mut reps = 5;
+    let mut others = true;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--sizes" => {
+                sizes = it
+                    .next()
+                    .context("--sizes needs a value")?
+                    .split(',')
+                    .map(|s| s.parse().with_context(|| format!("bad size {s}")))
+                    .collect::<Result<_>>()?;
+            }
+            "--reps" => reps = it.next().context("--reps needs a value")?.parse()?,
+            "--chains-only" => others = false,
+            other => bail!("unknown option {other}; usage: loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only]"),
+        }
+    }
+    let t = loci_bench::assembly::run_all(
+        &sizes,
+        reps,
+        others,
+        Some(&Path::new(env!("CARGO_MANIFEST_DIR"))),
+    );
+    print!("{}", loci_bench::assembly::table(&t));
+    Ok(())
 }

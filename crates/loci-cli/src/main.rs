@@ -14,6 +14,8 @@ macro_rules! outln {
     ($($t:tt)*) => { $crate::emit(&format!("{}\n", format!($($t)*))) };
 }
 
+mod assemble;
+mod assembly_svg;
 mod check;
 mod conformance;
 mod render;
@@ -94,6 +96,25 @@ enum Command {
         /// Draw the file's values as they are, without solving first.
         #[arg(long)]
         no_solve: bool,
+    },
+    /// Solve an assembly file (components, mates, joints) and print each mate's status, the
+    /// assembly's degrees of freedom and every component's remaining motions.
+    Assemble {
+        /// A loci assembly JSON file (docs/assembly-format.md).
+        file: PathBuf,
+        /// Print the report as JSON.
+        #[arg(long)]
+        json: bool,
+        /// Run the stepped relaxation instead, printing every pass.
+        #[arg(long)]
+        steps: bool,
+        /// Write the assembly with its solved poses here.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Draw the solved assembly here as an SVG (isometric wireframe of frames and
+        /// references).
+        #[arg(long)]
+        svg: Option<PathBuf>,
     },
     /// Check loci against SolveSpace's regression fixtures and print a Markdown report.
     Conformance {
@@ -213,6 +234,13 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
             }
             Ok(check::exit_code(&d))
         }
+        Command::Assemble {
+            file,
+            json,
+            steps,
+            output,
+            svg,
+        } => assemble::run(&file, json, steps, output.as_deref(), svg.as_deref()),
         Command::Convert { file, to, output } => {
             let ext = file.extension().and_then(|e| e.to_str()).unwrap_or("");
             if ext == to {

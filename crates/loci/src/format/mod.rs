@@ -1,4 +1,5 @@
 //! File formats.
 
+pub mod assembly;
 pub mod json;
 pub mod slvs;

@@ -1,0 +1,294 @@
+//! The report: statuses, degrees of freedom, motions in words, conflicts as minimal sets.
+
+use super::parts;
+use loci::assembly::{Assembly, Mate, MateKind as K, MateStatus, Pose, Selection};
+
+fn two(pose: Pose) -> Assembly {
+    let mut asm = Assembly::new();
+    asm.add_component(parts("g", Pose::IDENTITY).grounded())
+        .unwrap();
+    asm.add_component(parts("b", pose)).unwrap();
+    asm
+}
+
+fn mate(asm: &mut Assembly, kind: K, ra: &str, rb: &str) -> String {
+    asm.add_mate(Mate::new(
+        kind,
+        Selection::on("g", ra),
+        Selection::on("b", rb),
+    ))
+    .unwrap()
+}
+
+#[test]
+fn a_hinge_has_exactly_one_rotation_about_its_axis() {
+    let mut asm = Assembly::new();
+    let hinge = loci::assembly::Reference::Axis {
+        point: [10.0, 0.0, 0.0],
+        direction: [0.0, 0.0, 1.0],
+    };
+    asm.add_component(
+        parts("g", Pose::IDENTITY)
+            .grounded()
+            .with("hinge", hinge.clone()),
+    )
+    .unwrap();
+    asm.add_component(
+        parts(
+            "door",
+            Pose::from_axis_angle([0.2, -0.1, 0.3], [0.1, 0.0, 1.0], 12.0),
+        )
+        .with("hinge", hinge),
+    )
+    .unwrap();
+    asm.add_mate(Mate::new(
+        K::Revolute,
+        Selection::on("g", "hinge"),
+        Selection::on("door", "hinge"),
+    ))
+    .unwrap();
+    let r = asm.solve().unwrap();
+    assert!(r.all_hold(), "{r}");
+    assert_eq!(r.dof, 1);
+    let door = r.component("door").unwrap();
+    assert_eq!(door.dof, 1);
+    assert_eq!(
+        door.motions,
+        ["rotates about axis (0, 0, 1) through (10, 0, 0)"]
+    );
+    assert_eq!(r.component("g").unwrap().dof, 0);
+}
+
+#[test]
+fn motions_read_as_words() {
+    let mut asm = two(Pose::new([0.7, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]));
+    mate(&mut asm, K::Slider, "edge", "edge");
+    let r = asm.solve().unwrap();
+    assert_eq!(
+        r.component("b").unwrap().motions,
+        ["slides along (1, 0, 0)"]
+    );
+
+    let mut asm = two(Pose::new([2.0, 3.0, 4.0], [1.0, 0.0, 0.0, 0.0]));
+    mate(&mut asm, K::Ball, "corner", "corner");
+    let r = asm.solve().unwrap();
+    assert_eq!(
+        r.component("b").unwrap().motions,
+        ["turns freely about (0, 0, 0)"]
+    );
+
+    let mut asm = two(Pose::new([0.3, 0.3, 0.0], [1.0, 0.0, 0.0, 0.0]));
+    mate(&mut asm, K::Planar, "top", "top");
+    let r = asm.solve().unwrap();
+    let b = r.component("b").unwrap();
+    assert_eq!(b.dof, 3);
+    assert_eq!(b.motions[0], "slides in the plane normal to (0, 0, 1)");
+    assert!(
+        b.motions[1].starts_with("rotates about axis (0, 0, 1)"),
+        "{:?}",
+        b.motions
+    );
+
+    let mut asm = two(Pose::new([0.0, 0.0, 0.5], [1.0, 0.0, 0.0, 0.0]));
+    mate(&mut asm, K::Cylindrical, "axis", "axis");
+    let r = asm.solve().unwrap();
+    assert_eq!(
+        r.component("b").unwrap().motions,
+        [
+            "slides along (0, 0, 1)",
+            "rotates about axis (0, 0, 1) through (0, 0, 0)"
+        ]
+    );
+
+    let asm_free = &mut two(Pose::new([1.0, 2.0, 3.0], [1.0, 0.0, 0.0, 0.0]));
+    let r = asm_free.solve().unwrap();
+    assert_eq!(r.dof, 6);
+    assert_eq!(
+        r.component("b").unwrap().motions,
+        ["moves freely in space", "turns freely about (1, 2, 3)"]
+    );
+}
+
+#[test]
+fn two_fighting_mates_are_named_and_nothing_else() {
+    let mut asm = two(Pose::new([0.0, 0.0, 0.2], [1.0, 0.0, 0.0, 0.0]));
+    let hinge = mate(&mut asm, K::Revolute, "axis", "axis");
+    let d1 = mate(&mut asm, K::Distance { value: 2.0 }, "side", "far");
+    let d2 = mate(&mut asm, K::Distance { value: 3.0 }, "side", "far");
+    let grounded_before = asm.components[0].pose;
+    let r = asm.solve().unwrap();
+    assert_eq!(r.conflicts, vec![vec![d1.clone(), d2.clone()]], "{r}");
+    assert_eq!(r.mate(&d1).unwrap().status, MateStatus::Conflicting);
+    assert_eq!(r.mate(&d2).unwrap().status, MateStatus::Conflicting);
+    assert_ne!(r.mate(&hinge).unwrap().status, MateStatus::Conflicting);
+    assert_eq!(asm.components[0].pose, grounded_before);
+    let text = r.to_string();
+    assert!(
+        text.contains("conflict: {DIST1, DIST2} cannot all hold"),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_repeated_mate_is_redundant() {
+    let mut asm = two(Pose::new([0.1, 0.0, 0.0], [1.0, 0.0, 0.0, 0.0]));
+    mate(&mut asm, K::Coincident, "corner", "corner");
+    mate(&mut asm, K::Coincident, "corner", "corner");
+    let r = asm.solve().unwrap();
+    assert!(r.all_hold(), "{r}");
+    assert_eq!(r.redundant.len(), 1, "{r}");
+    assert!(
+        r.mates.iter().any(|m| m.status == MateStatus::Redundant),
+        "{r}"
+    );
+}
+
+#[test]
+fn selections_that_cannot_serve_are_named() {
+    let mut asm = two(Pose::IDENTITY);
+    let p = mate(&mut asm, K::Parallel, "corner", "axis");
+    let c = mate(&mut asm, K::Concentric, "top", "axis");
+    let u = asm
+        .add_mate(Mate::new(
+            K::Coincident,
+            Selection::on("g", "nothing"),
+            Selection::on("b", "corner"),
+        ))
+        .unwrap();
+    let r = asm.solve().unwrap();
+    for id in [&p, &c, &u] {
+        assert_eq!(
+            r.mate(id).unwrap().status,
+            MateStatus::InvalidSelection,
+            "{r}"
+        );
+    }
+    assert!(r
+        .mate(&p)
+        .unwrap()
+        .message
+        .contains("g.corner is a vertex, which gives no direction"));
+    assert!(r
+        .mate(&c)
+        .unwrap()
+        .message
+        .contains("g.top is a face, which gives no line"));
+    assert!(r
+        .mate(&u)
+        .unwrap()
+        .message
+        .contains("`g` has no reference `nothing`"));
+}
+
+#[test]
+fn both_grounded_is_blocked_unless_it_already_holds() {
+    let mut asm = two(Pose::IDENTITY);
+    asm.components[1].grounded = true;
+    let ok = mate(&mut asm, K::Coincident, "corner", "corner");
+    let no = mate(&mut asm, K::Distance { value: 1.0 }, "corner", "corner");
+    let r = asm.solve().unwrap();
+    assert_eq!(r.mate(&ok).unwrap().status, MateStatus::Satisfied);
+    assert_eq!(r.mate(&no).unwrap().status, MateStatus::Blocked);
+    assert!((r.mate(&no).unwrap().error - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn joint_limits_are_reported_when_violated() {
+    // A revolute's angle is zero where the two references' frames agree.
+    let mut asm = two(Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 20.0));
+    let id = asm
+        .add_mate(
+            Mate::new(
+                K::Revolute,
+                Selection::on("g", "axis"),
+                Selection::on("b", "axis"),
+            )
+            .with_limits(-30.0, 30.0),
+        )
+        .unwrap();
+    let r = asm.solve().unwrap();
+    let m = r.mate(&id).unwrap();
+    assert!(
+        (m.value.unwrap() - 20.0).abs() < 1e-9 && !m.limit_violated,
+        "{r}"
+    );
+    asm.components[1].pose = Pose::from_axis_angle([0.0; 3], [0.0, 0.0, 1.0], 50.0);
+    let r = asm.solve().unwrap();
+    let m = r.mate(&id).unwrap();
+    assert!((m.value.unwrap() - 50.0).abs() < 1e-9, "{r}");
+    assert!(
+        m.limit_violated && m.message.contains("joint limit [-30, 30] violated"),
+        "{r}"
+    );
+}
+
+#[test]
+fn bad_input_gives_typed_errors_not_panics() {
+    use loci::assembly::{AssemblyError, Component, Reference};
+    let mut asm = Assembly::new();
+    let nan = Pose {
+        translation: [f64::NAN, 0.0, 0.0],
+        rotation: [1.0, 0.0, 0.0, 0.0],
+    };
+    assert_eq!(
+        asm.add_component(Component::new("x", nan)),
+        Err(AssemblyError::BadPose("x".into()))
+    );
+    let bad_ref = Component::new("y", Pose::IDENTITY).with(
+        "v",
+        Reference::Vertex {
+            point: [f64::INFINITY, 0.0, 0.0],
+        },
+    );
+    assert!(matches!(
+        asm.add_component(bad_ref),
+        Err(AssemblyError::BadReference { .. })
+    ));
+    // A zero normal gives no direction; a NaN distance is no distance; unknown names are named.
+    let mut asm = two(Pose::IDENTITY);
+    asm.components[1].references.push((
+        "flat".into(),
+        Reference::Face {
+            point: [0.0; 3],
+            normal: [0.0; 3],
+        },
+    ));
+    let z = mate(&mut asm, K::Parallel, "top", "flat");
+    let d = mate(
+        &mut asm,
+        K::Distance { value: f64::NAN },
+        "corner",
+        "corner",
+    );
+    let n = mate(&mut asm, K::Distance { value: -1.0 }, "corner", "corner");
+    let c = asm
+        .add_mate(Mate::new(
+            K::Ball,
+            Selection::on("nobody", "corner"),
+            Selection::on("b", "corner"),
+        ))
+        .unwrap();
+    let r = asm.solve().unwrap();
+    for id in [&z, &d, &n, &c] {
+        assert_eq!(
+            r.mate(id).unwrap().status,
+            MateStatus::InvalidSelection,
+            "{r}"
+        );
+    }
+    assert!(r
+        .mate(&c)
+        .unwrap()
+        .message
+        .contains("component `nobody` does not exist"));
+    assert!(r.mate(&n).unwrap().message.contains("zero or more"));
+    // Options are checked.
+    asm.options.tolerance = -1.0;
+    assert!(matches!(
+        asm.solve(),
+        Err(AssemblyError::BadOption {
+            name: "tolerance",
+            ..
+        })
+    ));
+}
