@@ -88,21 +88,7 @@ fn write_out(
     svg: Option<&Path>,
 ) -> anyhow::Result<()> {
     if let Some(p) = svg {
-        // Glyphs a tenth of the assembly's spread, so small and large assemblies both read.
-        let t: Vec<[f64; 3]> = asm.components.iter().map(|c| c.pose.translation).collect();
-        let spread = (0..3)
-            .map(|k| {
-                let lo = t.iter().map(|v| v[k]).fold(f64::INFINITY, f64::min);
-                let hi = t.iter().map(|v| v[k]).fold(f64::NEG_INFINITY, f64::max);
-                if lo.is_finite() {
-                    hi - lo
-                } else {
-                    0.0
-                }
-            })
-            .fold(0.0, f64::max);
-        let size = if spread > 0.0 { spread / 10.0 } else { 1.0 };
-        std::fs::write(p, crate::assembly_svg::assembly_svg(asm, size))
+        std::fs::write(p, picture(asm))
             .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", p.display()))?;
     }
     if let Some(out) = output {
@@ -112,7 +98,9 @@ fn write_out(
     Ok(())
 }
 
-fn exit_code(r: &AssemblyReport) -> u8 {
+/// The exit status of an assembly solve: 0 when every mate holds, 1 when mates conflict, 2
+/// otherwise.
+pub fn exit_code(r: &AssemblyReport) -> u8 {
     if r.mates.iter().any(|m| m.status == MateStatus::Conflicting) {
         code::INCONSISTENT
     } else if r.all_hold() {
@@ -120,4 +108,23 @@ fn exit_code(r: &AssemblyReport) -> u8 {
     } else {
         code::DID_NOT_CONVERGE
     }
+}
+
+/// The assembly's isometric wireframe, glyphs a tenth of the spread of its components, so
+/// that small and large assemblies both read.
+pub fn picture(asm: &loci::assembly::Assembly) -> String {
+    let t: Vec<[f64; 3]> = asm.components.iter().map(|c| c.pose.translation).collect();
+    let spread = (0..3)
+        .map(|k| {
+            let lo = t.iter().map(|v| v[k]).fold(f64::INFINITY, f64::min);
+            let hi = t.iter().map(|v| v[k]).fold(f64::NEG_INFINITY, f64::max);
+            if lo.is_finite() {
+                hi - lo
+            } else {
+                0.0
+            }
+        })
+        .fold(0.0, f64::max);
+    let size = if spread > 0.0 { spread / 10.0 } else { 1.0 };
+    crate::assembly_svg::assembly_svg(asm, size)
 }

@@ -77,6 +77,33 @@ fn every_example_renders_with_solve_s_exit_code() {
 }
 
 #[test]
+fn every_assembly_example_renders_as_an_isometric_wireframe() {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(repo("examples/assembly"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 4, "{files:?}");
+    for p in files {
+        let r = loci(&["render", p.to_str().unwrap()]);
+        let a = loci(&["assemble", p.to_str().unwrap()]);
+        assert_eq!(r.status.code(), a.status.code(), "{}", p.display());
+        let svg = String::from_utf8(r.stdout).unwrap();
+        let doc = roxmltree::Document::parse(&svg).expect("well-formed SVG");
+        assert_eq!(doc.root_element().tag_name().name(), "svg");
+        let lines = doc
+            .descendants()
+            .filter(|n| {
+                n.has_tag_name("line") || n.has_tag_name("polyline") || n.has_tag_name("path")
+            })
+            .count();
+        assert!(lines >= 3, "{}: a frame's three axes at least", p.display());
+        assert!(!svg.contains("NaN"), "{}", p.display());
+    }
+}
+
+#[test]
 fn the_inconsistent_example_has_its_conflict_in_red() {
     let p = repo("examples/inconsistent.json");
     let r = loci(&["render", p.to_str().unwrap()]);

@@ -18,6 +18,11 @@ pub(crate) fn run(
     group: Option<u32>,
     no_solve: bool,
 ) -> anyhow::Result<u8> {
+    if file.extension().is_some_and(|e| e == "json") {
+        if let Some(code) = assembly(file, output, no_solve)? {
+            return Ok(code);
+        }
+    }
     let (sys, group, opts, diagnosis, outcome) = if file.extension().is_some_and(|e| e == "slvs") {
         from_slvs(file, group, no_solve)?
     } else {
@@ -30,6 +35,36 @@ pub(crate) fn run(
         None => crate::emit(&svg),
     }
     Ok(outcome.map_or(code::SOLVED, exit_code))
+}
+
+/// Draws an assembly file (one with a top-level `"loci_assembly"` key) as an isometric
+/// wireframe; `None` for any other file. The exit status is `loci assemble`'s.
+fn assembly(file: &Path, output: Option<&Path>, no_solve: bool) -> anyhow::Result<Option<u8>> {
+    let text = std::fs::read_to_string(file)
+        .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", file.display()))?;
+    let is_assembly = serde_json::from_str::<serde_json::Value>(&text)
+        .ok()
+        .is_some_and(|v| v.get("loci_assembly").is_some());
+    if !is_assembly {
+        return Ok(None);
+    }
+    let mut asm = loci::format::assembly::read(&text)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+    let status = if no_solve {
+        code::SOLVED
+    } else {
+        let report = asm
+            .solve()
+            .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+        crate::assemble::exit_code(&report)
+    };
+    let svg = crate::assemble::picture(&asm);
+    match output {
+        Some(out) => std::fs::write(out, svg)
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?,
+        None => crate::emit(&svg),
+    }
+    Ok(Some(status))
 }
 
 type Loaded = (
