@@ -58,6 +58,14 @@ pub enum ModelError {
         expected: &'static str,
     },
     /// A NaN or infinite number.
+    /// An object cannot be removed while another still refers to it.
+    #[error("{object} cannot be removed: {user} still refers to it")]
+    InUse {
+        /// The object asked to be removed.
+        object: ObjectId,
+        /// The first object found that refers to it.
+        user: ObjectId,
+    },
     #[error("{owner}: {field} is {value}, not a finite number")]
     NonFinite {
         /// The object.
