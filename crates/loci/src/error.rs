@@ -57,7 +57,6 @@ pub enum ModelError {
         /// What it should hold.
         expected: &'static str,
     },
-    /// A NaN or infinite number.
     /// An object cannot be removed while another still refers to it.
     #[error("{object} cannot be removed: {user} still refers to it")]
     InUse {
@@ -66,6 +65,7 @@ pub enum ModelError {
         /// The first object found that refers to it.
         user: ObjectId,
     },
+    /// A NaN or infinite number.
     #[error("{owner}: {field} is {value}, not a finite number")]
     NonFinite {
         /// The object.
