@@ -15,6 +15,9 @@ use std::collections::{BTreeMap, BTreeSet};
 /// The shortest piece of a step tried, as a fraction of it, before giving up.
 const SHORTEST_PIECE: f64 = 1.0 / 64.0;
 
+/// The relative step size of the dragged parameters (see [`crate::Config::dragged_scale`]).
+const DRAGGED_SCALE: f64 = 1e-3;
+
 /// What one drag step did.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DragStep {
@@ -63,7 +66,10 @@ impl Sketch {
             return Err(SketchError::Fixed(shape));
         }
         let params: Vec<_> = points.iter().flat_map(|p| self.point_params(*p)).collect();
-        let cfg = self.cfg.clone().with_find_failed(false);
+        // The grip should reach the cursor wherever the constraints allow: its parameters
+        // weigh far more than the rest.
+        let scale = self.cfg.dragged_scale.min(DRAGGED_SCALE);
+        let cfg = self.cfg.clone().with_find_failed(false).with_dragged_scale(scale);
         let triangles = self.triangles();
         let arcs = self
             .shapes()
@@ -215,6 +221,18 @@ impl Drag<'_> {
             }
         }
         step.reached = done >= 1.0;
+        // The grip's parameters weigh much more than the rest, but not infinitely: when the
+        // target is within reach the grip stops a hair short of it (a millionth of the step).
+        // One more solve from there closes the gap; a target out of reach stays far.
+        let span = (target[0] - start[0]).hypot(target[1] - start[1]);
+        let grip = self.grip();
+        let miss = (grip[0] - target[0]).hypot(grip[1] - target[1]);
+        if step.reached && miss > 1e-12 * (1.0 + span) && miss < 1e-3 * span {
+            let (outcome, flipped) = self.attempt(target)?;
+            if outcome.is_ok() && !flipped {
+                step.pieces += 1;
+            }
+        }
         step.at = self.grip();
         step.miss = (step.at[0] - target[0]).hypot(step.at[1] - target[1]);
         Ok(step)

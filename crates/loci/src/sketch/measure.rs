@@ -183,19 +183,20 @@ impl Sketch {
         }
     }
 
-    /// How far two shapes are from tangent: for a line and a circle or arc, the distance of
-    /// the centre from the line against the radius; for two round shapes, the distance of
-    /// the centres against the sum or difference of the radii (whichever is nearer); with a
-    /// cubic, the sine of the angle between the directions at the chosen ends.
+    /// How far two shapes are from tangent. With a circle: for a line, the distance of the
+    /// centre from the line against the radius; for another circle or arc, the distance of
+    /// the centres against the sum or difference of the radii (whichever is nearer).
+    /// Between lines, arcs and cubics (tangent at their ends): the sine of the angle between
+    /// their directions at the chosen ends.
     fn tangent_residual(&self, a: ShapeId, b: ShapeId, a_end: super::End, b_end: super::End) -> f64 {
         let (ka, kb) = (self.kind(a), self.kind(b));
-        let round = |k| matches!(k, Some(ShapeKind::Circle | ShapeKind::Arc));
-        if ka == Some(ShapeKind::Line) && round(kb) || kb == Some(ShapeKind::Line) && round(ka) {
-            let (l, c) = if ka == Some(ShapeKind::Line) { (a, b) } else { (b, a) };
-            let center = self.point(self.center_of(c.0));
-            return (self.side(center, l).abs() - self.radius_of(c.0)).abs();
-        }
-        if round(ka) && round(kb) {
+        let circle = Some(ShapeKind::Circle);
+        if ka == circle || kb == circle {
+            if ka == Some(ShapeKind::Line) || kb == Some(ShapeKind::Line) {
+                let (l, c) = if ka == Some(ShapeKind::Line) { (a, b) } else { (b, a) };
+                let center = self.point(self.center_of(c.0));
+                return (self.side(center, l).abs() - self.radius_of(c.0)).abs();
+            }
             let (ca, cb) = (self.point(self.center_of(a.0)), self.point(self.center_of(b.0)));
             let (ra, rb) = (self.radius_of(a.0), self.radius_of(b.0));
             let d = norm(sub(ca, cb));

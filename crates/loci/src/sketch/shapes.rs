@@ -273,6 +273,36 @@ impl Sketch {
             .map(|(h, s)| (ShapeId(*h), s.geometry.kind()))
     }
 
+    /// The shape as a point, when it is one.
+    #[must_use]
+    pub fn as_point(&self, s: ShapeId) -> Option<PointId> {
+        (self.kind(s) == Some(ShapeKind::Point)).then_some(PointId(s.0))
+    }
+
+    /// The shape as a line, when it is one.
+    #[must_use]
+    pub fn as_line(&self, s: ShapeId) -> Option<LineId> {
+        (self.kind(s) == Some(ShapeKind::Line)).then_some(LineId(s.0))
+    }
+
+    /// The shape as a circle, when it is one.
+    #[must_use]
+    pub fn as_circle(&self, s: ShapeId) -> Option<CircleId> {
+        (self.kind(s) == Some(ShapeKind::Circle)).then_some(CircleId(s.0))
+    }
+
+    /// The shape as an arc, when it is one.
+    #[must_use]
+    pub fn as_arc(&self, s: ShapeId) -> Option<ArcId> {
+        (self.kind(s) == Some(ShapeKind::Arc)).then_some(ArcId(s.0))
+    }
+
+    /// The shape as a cubic, when it is one.
+    #[must_use]
+    pub fn as_cubic(&self, s: ShapeId) -> Option<CubicId> {
+        (self.kind(s) == Some(ShapeKind::Cubic)).then_some(CubicId(s.0))
+    }
+
     /// The points that define a shape (a point itself; a circle its centre; an arc its
     /// centre, start and end), or none when there is no such shape.
     #[must_use]
