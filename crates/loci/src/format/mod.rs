@@ -1,4 +1,5 @@
 //! File formats.
 
 pub mod json;
+pub mod sketch;
 pub mod slvs;
