@@ -8,6 +8,7 @@
 
 pub mod check;
 pub mod compare;
+pub mod drag;
 pub mod generate;
 pub mod peers;
 pub mod problem;

@@ -6,6 +6,7 @@
 //! loci-bench worker SOLVER PROBLEM.json REPS BUDGET_S OUT.json
 //! loci-bench emit FAMILY VARIANT SIZE DIR
 //! loci-bench report DIR
+//! loci-bench drag [SIZES [STEPS]]     (sizes as 100,1000,10000; 600 steps)
 //! ```
 
 use anyhow::{bail, Context, Result};
@@ -42,6 +43,7 @@ fn real_main() -> Result<()> {
         Some("worker") => return worker(&args[1..]),
         Some("emit") => return emit(&args[1..]),
         Some("report") => return rerender(&args[1..]),
+        Some("drag") => return drag(&args[1..]),
         _ => {}
     }
     let mut quick = false;
@@ -308,4 +310,22 @@ fn today_utc() -> String {
     let m = if mp < 10 { mp + 3 } else { mp - 9 };
     let y = yoe + era * 400 + i64::from(m <= 2);
     format!("{y:04}-{m:02}-{d:02}")
+}
+
+/// `loci-bench drag [SIZES [STEPS]]`: the drag benchmark, printed as a markdown table.
+fn drag(args: &[String]) -> Result<()> {
+    let sizes: Vec<usize> = match args.first() {
+        Some(s) => s
+            .split(',')
+            .map(|n| n.parse().with_context(|| format!("bad size {n}")))
+            .collect::<Result<_>>()?,
+        None => vec![100, 1000, 10_000],
+    };
+    let steps: usize = match args.get(1) {
+        Some(s) => s.parse().context("steps is a number")?,
+        None => 600,
+    };
+    let figures = loci_bench::drag::drag_benchmark(&sizes, steps.max(2));
+    print!("{}", loci_bench::drag::drag_table(&figures));
+    Ok(())
 }

@@ -41,12 +41,17 @@ pub struct DragStep {
 /// A drag in progress; ends (taking its soft constraints out) when dropped.
 pub struct Drag<'a> {
     sketch: &'a mut Sketch,
-    shape: ShapeId,
     points: Vec<PointId>,
     soft: Vec<SoftRec>,
     solver: Solver,
-    triangles: Vec<[PointId; 3]>,
-    arcs: Vec<ArcId>,
+    /// Positions of the coordinates of the grip's points, x then y.
+    grip_ix: Vec<[usize; 2]>,
+    /// Positions of the coordinates of each triangle's corners.
+    triangles: Vec<[[usize; 2]; 3]>,
+    /// Positions of the coordinates of each arc's centre, start and end.
+    arcs: Vec<[[usize; 2]; 3]>,
+    /// Fixed points' coordinates: parameters, positions and values.
+    fixed: Vec<(crate::ParamId, usize, f64)>,
     /// The system revision the solver compiled, once it has.
     compiled: Option<u64>,
 }
@@ -70,21 +75,37 @@ impl Sketch {
         // weigh far more than the rest.
         let scale = self.cfg.dragged_scale.min(DRAGGED_SCALE);
         let cfg = self.cfg.clone().with_find_failed(false).with_dragged_scale(scale);
-        let triangles = self.triangles();
+        self.restore_fixed();
+        let ix = |p: PointId| self.point_indexes(p);
+        let triangles = self.triangles().into_iter().map(|t| t.map(ix)).collect();
         let arcs = self
             .shapes()
             .filter(|(_, k)| *k == ShapeKind::Arc)
-            .map(|(s, _)| ArcId(s.0))
+            .map(|(s, _)| self.arc_points(ArcId(s.0)).map(ix))
+            .collect();
+        let grip_ix = match self.kind(shape) {
+            Some(ShapeKind::Circle | ShapeKind::Arc) => vec![ix(points[0])],
+            _ => points.iter().map(|p| ix(*p)).collect(),
+        };
+        let fixed = self
+            .fixed_points()
+            .into_iter()
+            .flat_map(|p| {
+                let ([i, j], [pi, pj]) = (ix(p), self.point_params(p));
+                let v = self.sys.params();
+                [(pi, i, v[i].val), (pj, j, v[j].val)]
+            })
             .collect();
         let soft = self.add_soft()?;
         Ok(Drag {
             sketch: self,
-            shape,
             points,
             soft,
             solver: Solver::new(Self::SHAPE_GROUP, &params, cfg),
+            grip_ix,
             triangles,
             arcs,
+            fixed,
             compiled: None,
         })
     }
@@ -157,13 +178,12 @@ impl Drag<'_> {
     /// The grip of the dragged shape, where it is now.
     #[must_use]
     pub fn grip(&self) -> [f64; 2] {
-        let s = &*self.sketch;
-        let pts: Vec<[f64; 2]> = match s.kind(self.shape) {
-            Some(ShapeKind::Circle | ShapeKind::Arc) => vec![s.point(self.points[0])],
-            _ => self.points.iter().map(|p| s.point(*p)).collect(),
-        };
-        let n = pts.len() as f64;
-        let sum = pts.iter().fold([0.0, 0.0], |a, p| [a[0] + p[0], a[1] + p[1]]);
+        let v = self.sketch.sys.params();
+        let n = self.grip_ix.len() as f64;
+        let sum = self
+            .grip_ix
+            .iter()
+            .fold([0.0, 0.0], |a, [i, j]| [a[0] + v[*i].val, a[1] + v[*j].val]);
         [sum[0] / n, sum[1] / n]
     }
 
@@ -252,8 +272,11 @@ impl Drag<'_> {
         let compiling = self.compiled != Some(self.sketch.sys.revision());
         if compiling {
             self.sketch.prepare_user();
-        } else {
-            self.sketch.restore_fixed();
+        }
+        for &(p, i, want) in &self.fixed {
+            if self.sketch.sys.params()[i].val.to_bits() != want.to_bits() {
+                self.sketch.sys.set_value(p, want);
+            }
         }
         self.sketch.write_soft(&mut self.soft, &soft_values, compiling);
         let report = self.solver.solve(&mut self.sketch.sys)?;
@@ -269,13 +292,19 @@ impl Drag<'_> {
 
     /// Signed areas of the triangles and sweeps of the arcs.
     fn orientation(&self) -> (Vec<f64>, Vec<f64>) {
-        let s = &*self.sketch;
-        let tri = self
-            .triangles
+        let v = self.sketch.sys.params();
+        let xy = |[i, j]: [usize; 2]| [v[i].val, v[j].val];
+        let tri = self.triangles.iter().map(|t| area(t.map(xy))).collect();
+        let arcs = self
+            .arcs
             .iter()
-            .map(|t| area(t.map(|p| s.point(p))))
+            .map(|a| {
+                let [c, s, e] = a.map(xy);
+                let start = (s[1] - c[1]).atan2(s[0] - c[0]);
+                let end = (e[1] - c[1]).atan2(e[0] - c[0]);
+                (end - start).to_degrees().rem_euclid(360.0)
+            })
             .collect();
-        let arcs = self.arcs.iter().map(|a| s.arc(*a).sweep).collect();
         (tri, arcs)
     }
 

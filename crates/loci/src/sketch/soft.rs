@@ -31,6 +31,9 @@ pub enum Soft {
 pub(crate) struct SoftRec {
     pub soft: Soft,
     pub core: ConstraintId,
+    /// Positions in the parameter vector of the coordinates it reads: a line's ends, or an
+    /// arc's centre and the end it keeps (the start for its radius), x then y.
+    pub ix: [usize; 4],
     /// For an angle: the sign the solver kept when it compiled (see
     /// [`Sketch::prepare_angle`]).
     pub sign: f64,
@@ -162,7 +165,21 @@ impl Sketch {
                 }
             };
             match self.sys.add_constraint(c) {
-                Ok(core) => out.push(SoftRec { soft: s, core, sign: 1.0 }),
+                Ok(core) => {
+                    let pts = match s {
+                        Soft::LineLength(l) => self.line_points(l),
+                        Soft::ArcRadius(a) | Soft::ArcStart(a) => {
+                            let [c, st, _] = self.arc_points(a);
+                            [c, st]
+                        }
+                        Soft::ArcEnd(a) => {
+                            let [c, _, en] = self.arc_points(a);
+                            [c, en]
+                        }
+                    };
+                    let [a, b] = pts.map(|p| self.point_indexes(p));
+                    out.push(SoftRec { soft: s, core, ix: [a[0], a[1], b[0], b[1]], sign: 1.0 });
+                }
                 Err(e) => {
                     self.remove_soft(&out);
                     return Err(e.into());
@@ -181,7 +198,17 @@ impl Sketch {
 
     /// The values the soft constraints keep in the next solve: the shapes as drawn now.
     pub(crate) fn soft_values(&self, recs: &[SoftRec]) -> Vec<f64> {
-        recs.iter().map(|r| self.soft_value(r.soft)).collect()
+        let v = self.sys.params();
+        recs.iter()
+            .map(|r| {
+                let [ax, ay, bx, by] = r.ix.map(|i| v[i].val);
+                let (dx, dy) = (bx - ax, by - ay);
+                match r.soft {
+                    Soft::LineLength(_) | Soft::ArcRadius(_) => dx.hypot(dy),
+                    Soft::ArcStart(_) | Soft::ArcEnd(_) => dy.atan2(dx).to_degrees(),
+                }
+            })
+            .collect()
     }
 
     /// Writes soft values (value edits). `compiling`: the solver compiles next, from the
@@ -202,8 +229,12 @@ impl Sketch {
                     r.sign * wrap_deg(v)
                 }
             };
-            if let Some(mut c) = self.sys.constraint_mut(r.core) {
-                c.val = val;
+            // Most soft constraints of a drag keep their value from step to step: only
+            // those that changed are written.
+            if self.sys.constraint(r.core).is_some_and(|c| c.val.to_bits() != val.to_bits()) {
+                if let Some(mut c) = self.sys.constraint_mut(r.core) {
+                    c.val = val;
+                }
             }
         }
     }
