@@ -68,8 +68,11 @@ fn four_bar_among_rectangles(size: usize, steps: usize) -> Case {
     let mut k = 0;
     while n + 8 <= size {
         let (x0, y0) = (10.0 + 6.0 * (k % 40) as f64, 6.0 * (k / 40) as f64);
-        let q = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]].map(|o| p(&mut s, x0 + o[0], y0 + o[1]));
-        let l: Vec<LineId> = (0..4).map(|i| line(&mut s, q[i], q[(i + 1) % 4], None)).collect();
+        let q = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]]
+            .map(|o| p(&mut s, x0 + o[0], y0 + o[1]));
+        let l: Vec<LineId> = (0..4)
+            .map(|i| line(&mut s, q[i], q[(i + 1) % 4], None))
+            .collect();
         s.fix(q[0]).expect("a point");
         s.horizontal(l[0]).expect("a line");
         s.horizontal(l[2]).expect("a line");
@@ -88,7 +91,12 @@ fn four_bar_among_rectangles(size: usize, steps: usize) -> Case {
             [t.cos(), t.sin()]
         })
         .collect();
-    Case { sketch: s, grip: b, path, triangles: vec![[b, c, e]] }
+    Case {
+        sketch: s,
+        grip: b,
+        path,
+        triangles: vec![[b, c, e]],
+    }
 }
 
 fn hinged_triangles(size: usize, steps: usize) -> Case {
@@ -100,7 +108,9 @@ fn hinged_triangles(size: usize, steps: usize) -> Case {
     let mut triangles = Vec::new();
     for i in 0..n {
         let x = i as f64;
-        let apex = s.add_point(x + 0.5, if i % 2 == 0 { h } else { -h }).expect("finite");
+        let apex = s
+            .add_point(x + 0.5, if i % 2 == 0 { h } else { -h })
+            .expect("finite");
         let next = s.add_point(x + 1.0, 0.0).expect("finite");
         line(&mut s, corner, apex, Some(1.0));
         line(&mut s, apex, next, Some(1.0));
@@ -117,7 +127,12 @@ fn hinged_triangles(size: usize, steps: usize) -> Case {
             [end[0] - 1.0 + t.cos(), end[1] + t.sin()]
         })
         .collect();
-    Case { sketch: s, grip: corner, path, triangles }
+    Case {
+        sketch: s,
+        grip: corner,
+        path,
+        triangles,
+    }
 }
 
 fn orientation(s: &Sketch, t: &[PointId; 3]) -> f64 {
@@ -130,14 +145,22 @@ fn run(name: &'static str, mut case: Case) -> DragFigures {
     let steps = case.path.len();
     let mut times = Vec::with_capacity(steps);
     let (mut flipped, mut short) = (0, 0);
-    let mut signs: Vec<f64> = case.triangles.iter().map(|t| orientation(&case.sketch, t)).collect();
+    let mut signs: Vec<f64> = case
+        .triangles
+        .iter()
+        .map(|t| orientation(&case.sketch, t))
+        .collect();
     let mut drag = case.sketch.begin_drag(case.grip).expect("a free point");
     for target in &case.path {
         let t0 = Instant::now();
         let st = drag.step(*target).expect("the solver starts");
         times.push(t0.elapsed().as_secs_f64() * 1e3);
         short += usize::from(!st.reached);
-        let now: Vec<f64> = case.triangles.iter().map(|t| orientation(drag.sketch(), t)).collect();
+        let now: Vec<f64> = case
+            .triangles
+            .iter()
+            .map(|t| orientation(drag.sketch(), t))
+            .collect();
         flipped += usize::from(now.iter().zip(&signs).any(|(a, b)| a != b));
         signs = now;
     }
@@ -162,7 +185,10 @@ fn run(name: &'static str, mut case: Case) -> DragFigures {
 pub fn drag_benchmark(sizes: &[usize], steps: usize) -> Vec<DragFigures> {
     let mut out = Vec::new();
     for &n in sizes {
-        out.push(run("four-bar among rectangles", four_bar_among_rectangles(n, steps)));
+        out.push(run(
+            "four-bar among rectangles",
+            four_bar_among_rectangles(n, steps),
+        ));
         out.push(run("hinged triangles", hinged_triangles(n, steps)));
     }
     out

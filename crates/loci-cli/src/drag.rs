@@ -26,9 +26,10 @@ pub(crate) fn run(
     output: Option<&Path>,
 ) -> anyhow::Result<u8> {
     let mut l = load(file)?;
-    let id = *l.shapes.get(shape).ok_or_else(|| {
-        anyhow::anyhow!("{}: no shape is named {shape:?}", file.display())
-    })?;
+    let id = *l
+        .shapes
+        .get(shape)
+        .ok_or_else(|| anyhow::anyhow!("{}: no shape is named {shape:?}", file.display()))?;
     let rep = l
         .sketch
         .solve()
@@ -47,7 +48,10 @@ pub(crate) fn run(
         let from = drag.grip();
         for k in 1..=steps {
             let t = k as f64 / steps as f64;
-            let target = [from[0] + t * (to[0] - from[0]), from[1] + t * (to[1] - from[1])];
+            let target = [
+                from[0] + t * (to[0] - from[0]),
+                from[1] + t * (to[1] - from[1]),
+            ];
             let st = drag
                 .step(target)
                 .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
@@ -75,5 +79,9 @@ pub(crate) fn run(
         std::fs::write(out, to_file(&l).to_json() + "\n")
             .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", out.display()))?;
     }
-    Ok(if all_ok { crate::code::SOLVED } else { crate::code::DID_NOT_CONVERGE })
+    Ok(if all_ok {
+        crate::code::SOLVED
+    } else {
+        crate::code::DID_NOT_CONVERGE
+    })
 }

@@ -17,7 +17,8 @@ pub(crate) fn load(file: &Path) -> anyhow::Result<LoadedSketch> {
     let text = std::fs::read_to_string(file)
         .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", file.display()))?;
     let f = SketchFile::from_json(&text).map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
-    f.load().map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))
+    f.load()
+        .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))
 }
 
 /// The file of a loaded sketch as it is now, with its names.
@@ -101,7 +102,11 @@ pub(crate) fn write_shapes(s: &mut String, l: &LoadedSketch) {
             let _ = writeln!(s, "  {name}: radius {:.6}", sk.circle(c).1);
         } else if let Some(a) = sk.as_arc(*id) {
             let g = sk.arc(a);
-            let _ = writeln!(s, "  {name}: radius {:.6}, sweep {:.4} deg", g.radius, g.sweep);
+            let _ = writeln!(
+                s,
+                "  {name}: radius {:.6}, sweep {:.4} deg",
+                g.radius, g.sweep
+            );
         }
     }
 }
@@ -162,7 +167,13 @@ pub(crate) fn check(file: &Path, json: bool) -> anyhow::Result<u8> {
         outln!("{}", serde_json::to_string_pretty(&v)?);
     } else {
         let mut s = String::new();
-        let _ = writeln!(s, "{}: sketch {}, {} degrees of freedom", file.display(), d.outcome, d.dof);
+        let _ = writeln!(
+            s,
+            "{}: sketch {}, {} degrees of freedom",
+            file.display(),
+            d.outcome,
+            d.dof
+        );
         for c in &conflicts {
             let _ = writeln!(s, "  conflict: {}", c.join(", "));
         }

@@ -5,18 +5,30 @@ use loci::{Constraint, ConstraintKind as K, Entity, ModelError, ObjectId, Param,
 
 fn two_points_and_a_line() -> System {
     let mut sys = System::new();
-    for (h, v) in [(1, 0.0), (2, 0.0), (3, 0.0), (4, 1.0), (5, 0.0), (6, 0.0), (7, 0.0)] {
+    for (h, v) in [
+        (1, 0.0),
+        (2, 0.0),
+        (3, 0.0),
+        (4, 1.0),
+        (5, 0.0),
+        (6, 0.0),
+        (7, 0.0),
+    ] {
         sys.add_param(Param::new(h, 1, v)).unwrap();
     }
     sys.add_entity(Entity::point_3d(101, 1, [1, 2, 3])).unwrap();
-    sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7])).unwrap();
+    sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7]))
+        .unwrap();
     sys.add_entity(Entity::workplane(200, 1, 101, 102)).unwrap();
     for (h, v) in [(11, 0.0), (12, 0.0), (13, 3.0), (14, 4.0)] {
         sys.add_param(Param::new(h, 2, v)).unwrap();
     }
-    sys.add_entity(Entity::point_2d(301, 2, 200, [11, 12])).unwrap();
-    sys.add_entity(Entity::point_2d(302, 2, 200, [13, 14])).unwrap();
-    sys.add_entity(Entity::line(400, 2, Some(200), 301, 302)).unwrap();
+    sys.add_entity(Entity::point_2d(301, 2, 200, [11, 12]))
+        .unwrap();
+    sys.add_entity(Entity::point_2d(302, 2, 200, [13, 14]))
+        .unwrap();
+    sys.add_entity(Entity::line(400, 2, Some(200), 301, 302))
+        .unwrap();
     sys.add_constraint(
         Constraint::new(1, 2, K::PtPtDistance)
             .in_workplane(Some(200))
@@ -44,7 +56,13 @@ fn an_entity_in_use_is_not_removed_and_the_error_names_the_user() {
     // The line goes; the point is still held by the constraint.
     assert!(sys.remove_entity(400.into()).unwrap().is_some());
     let err = sys.remove_entity(301.into()).unwrap_err();
-    assert!(matches!(err, ModelError::InUse { user: ObjectId::Constraint(_), .. }));
+    assert!(matches!(
+        err,
+        ModelError::InUse {
+            user: ObjectId::Constraint(_),
+            ..
+        }
+    ));
 }
 
 #[test]
@@ -55,7 +73,10 @@ fn removing_an_unused_entity_and_its_params_keeps_the_rest_solvable() {
     let rev = sys.revision();
     assert!(matches!(
         sys.remove_param(11.into()),
-        Err(ModelError::InUse { user: ObjectId::Entity(_), .. })
+        Err(ModelError::InUse {
+            user: ObjectId::Entity(_),
+            ..
+        })
     ));
     assert!(sys.remove_entity(301.into()).unwrap().is_some());
     assert!(sys.revision() > rev);

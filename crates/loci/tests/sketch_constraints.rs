@@ -19,7 +19,8 @@ fn perturb(s: &mut Sketch, by: f64) {
     for (i, p) in pts.into_iter().enumerate() {
         let [x, y] = s.point(p);
         let t = i as f64 * 1.7;
-        s.move_point(p, [x + by * t.sin(), y + by * t.cos()]).unwrap();
+        s.move_point(p, [x + by * t.sin(), y + by * t.cos()])
+            .unwrap();
     }
 }
 
@@ -28,7 +29,10 @@ fn holds_from_start_and_perturbed(s: &mut Sketch, id: SketchConstraintId, want: 
     for round in 0..2 {
         if round == 1 {
             perturb(s, 0.15);
-            let worst = s.constraints().map(|(c, _)| m(s, c).residual).fold(0.0, f64::max);
+            let worst = s
+                .constraints()
+                .map(|(c, _)| m(s, c).residual)
+                .fold(0.0, f64::max);
             assert!(worst > 1e-6 || want.is_none(), "perturbed");
         }
         let r = s.solve().unwrap();
@@ -36,14 +40,25 @@ fn holds_from_start_and_perturbed(s: &mut Sketch, id: SketchConstraintId, want: 
         let ids: Vec<_> = s.constraints().map(|(i, _)| i).collect();
         for c in ids {
             let got = m(s, c);
-            assert!(got.residual < TOL, "round {round}: {:?} residual {}", s.constraint(c), got.residual);
+            assert!(
+                got.residual < TOL,
+                "round {round}: {:?} residual {}",
+                s.constraint(c),
+                got.residual
+            );
         }
         if let Some(v) = want {
             let got = m(s, id).value.unwrap();
-            assert!((got - v).abs() < 1e-7, "round {round}: value {got}, want {v}");
+            assert!(
+                (got - v).abs() < 1e-7,
+                "round {round}: value {got}, want {v}"
+            );
         }
         // Nothing of the solve stays in the system.
-        let cores: usize = s.constraints().map(|(i, _)| s.core_constraints(i).len()).sum();
+        let cores: usize = s
+            .constraints()
+            .map(|(i, _)| s.core_constraints(i).len())
+            .sum();
         assert_eq!(s.system().constraints().len(), cores);
     }
 }
@@ -102,7 +117,8 @@ fn radius_diameter_and_arc_sweep() {
     let c0 = s.add_point(0.0, 0.0).unwrap();
     let c = s.add_circle(c0, 2.0).unwrap();
     let rid = s.radius(c, 2.5).unwrap();
-    let [ac, a0, a1] = [[10.0, 0.0], [12.0, 0.0], [10.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let [ac, a0, a1] =
+        [[10.0, 0.0], [12.0, 0.0], [10.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
     let arc = s.add_arc(ac, a0, a1).unwrap();
     let did = s.diameter(arc, 6.0).unwrap();
     let sid = s.arc_sweep(arc, 120.0).unwrap();
@@ -115,7 +131,8 @@ fn radius_diameter_and_arc_sweep() {
 #[test]
 fn a_sweep_past_half_a_turn_is_kept() {
     let mut s = Sketch::new();
-    let [ac, a0, a1] = [[0.0, 0.0], [2.0, 0.0], [0.0, -2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let [ac, a0, a1] =
+        [[0.0, 0.0], [2.0, 0.0], [0.0, -2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
     let arc = s.add_arc(ac, a0, a1).unwrap();
     let id = s.arc_sweep(arc, 250.0).unwrap();
     holds_from_start_and_perturbed(&mut s, id, Some(250.0));
@@ -137,7 +154,8 @@ fn distance_coincident_and_concentric() {
     let mut s = Sketch::new();
     let c0 = s.add_point(0.0, 0.0).unwrap();
     let c = s.add_circle(c0, 1.0).unwrap();
-    let [ac, a0, a1] = [[0.4, 0.2], [2.4, 0.2], [0.4, 2.2]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let [ac, a0, a1] =
+        [[0.4, 0.2], [2.4, 0.2], [0.4, 2.2]].map(|p| s.add_point(p[0], p[1]).unwrap());
     let arc = s.add_arc(ac, a0, a1).unwrap();
     let id = s.concentric(c, arc).unwrap();
     holds_from_start_and_perturbed(&mut s, id, None);
@@ -173,12 +191,14 @@ fn signed_angle_keeps_its_sign() {
 fn equal_radius_and_tangents() {
     // Line–arc at the arc's end, arc–arc, line–circle, circle–circle.
     let mut s = Sketch::new();
-    let [ac, a0, a1] = [[0.0, 0.0], [2.0, 0.0], [0.1, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let [ac, a0, a1] =
+        [[0.0, 0.0], [2.0, 0.0], [0.1, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
     let arc = s.add_arc(ac, a0, a1).unwrap();
     let q = s.add_point(-3.0, 2.3).unwrap();
     let l = s.add_line(a1, q).unwrap();
     let t1 = s.tangent(l, End::Start, arc, End::End).unwrap();
-    let [bc, b0, b1] = [[2.0, 4.2], [1.0, 5.0], [3.0, 4.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let [bc, b0, b1] =
+        [[2.0, 4.2], [1.0, 5.0], [3.0, 4.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
     let arc2 = s.add_arc(bc, b0, b1).unwrap();
     let t2 = s.tangent(arc, End::Start, arc2, End::End).unwrap();
     let c0 = s.add_point(8.0, 1.3).unwrap();
@@ -265,7 +285,8 @@ fn lock_toggles_and_keeps_a_line_and_an_arc() {
     assert!(s.constraint(lock).is_none());
 
     let mut s = Sketch::new();
-    let [ac, a0, a1] = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let [ac, a0, a1] =
+        [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
     let arc = s.add_arc(ac, a0, a1).unwrap();
     let lock = s.lock(arc).unwrap().unwrap();
     // Moving the centre carries the whole arc along: radius and angles are kept.
@@ -283,7 +304,12 @@ fn lock_toggles_and_keeps_a_line_and_an_arc() {
 fn reference_dimensions_measure_and_never_drive() {
     let mut s = Sketch::new();
     let l = line(&mut s, [0.0, 0.0], [3.0, 4.0]);
-    let id = s.add_reference(Spec::Length { line: l.into(), value: 1.0 }).unwrap();
+    let id = s
+        .add_reference(Spec::Length {
+            line: l.into(),
+            value: 1.0,
+        })
+        .unwrap();
     let r = s.solve().unwrap();
     assert!(r.outcome.is_ok());
     let got = m(&s, id);
@@ -322,7 +348,12 @@ fn wrong_shapes_and_values_are_refused_by_name() {
     let mut s = Sketch::new();
     let l = line(&mut s, [0.0, 0.0], [1.0, 0.0]);
     let [p, _] = s.line_points(l);
-    let err = s.add(Spec::Radius { shape: l.into(), value: 1.0 }).unwrap_err();
+    let err = s
+        .add(Spec::Radius {
+            shape: l.into(),
+            value: 1.0,
+        })
+        .unwrap_err();
     assert!(err.to_string().contains("a circle or an arc"), "{err}");
     let err = s.add(Spec::Horizontal { line: p.into() }).unwrap_err();
     assert!(err.to_string().contains("a line"), "{err}");
@@ -330,7 +361,11 @@ fn wrong_shapes_and_values_are_refused_by_name() {
     assert!(s.length(l, -1.0).is_err());
     assert!(s.add_point(f64::INFINITY, 0.0).is_err());
     assert!(s.tangent(l, End::Start, l, End::End).is_err());
-    assert_eq!(s.system().constraints().len(), 0, "a refused constraint writes nothing");
+    assert_eq!(
+        s.system().constraints().len(),
+        0,
+        "a refused constraint writes nothing"
+    );
 }
 
 #[test]

@@ -13,8 +13,11 @@ fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
 #[test]
 fn a_dimensioned_rectangle_dragged_by_a_corner_moves_rigidly() {
     let mut s = Sketch::new();
-    let p = [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]].map(|q| s.add_point(q[0], q[1]).unwrap());
-    let l: Vec<LineId> = (0..4).map(|i| s.add_line(p[i], p[(i + 1) % 4]).unwrap()).collect();
+    let p =
+        [[0.0, 0.0], [4.0, 0.0], [4.0, 2.0], [0.0, 2.0]].map(|q| s.add_point(q[0], q[1]).unwrap());
+    let l: Vec<LineId> = (0..4)
+        .map(|i| s.add_line(p[i], p[(i + 1) % 4]).unwrap())
+        .collect();
     s.horizontal(l[0]).unwrap();
     s.horizontal(l[2]).unwrap();
     s.vertical(l[1]).unwrap();
@@ -33,7 +36,10 @@ fn a_dimensioned_rectangle_dragged_by_a_corner_moves_rigidly() {
         let shift = [3.0 * t, -1.5 * t];
         for (q, b) in p.iter().zip(&before) {
             let now = sk.point(*q);
-            assert!(dist(now, [b[0] + shift[0], b[1] + shift[1]]) < 1e-6, "step {k}");
+            assert!(
+                dist(now, [b[0] + shift[0], b[1] + shift[1]]) < 1e-6,
+                "step {k}"
+            );
         }
     }
 }
@@ -92,14 +98,30 @@ fn a_four_bar_linkage_follows_a_full_turn_of_its_crank_without_flipping() {
         let st = drag.step(target).unwrap();
         assert!(st.reached && st.outcome.is_ok(), "step {k}: {st:?}");
         let sk = drag.sketch();
-        assert!(dist(sk.point(b), target) < 1e-6, "step {k}: the crank follows the cursor {st:?}");
-        let tri = FourBar { s: Sketch::new(), b, c, e: f.e };
+        assert!(
+            dist(sk.point(b), target) < 1e-6,
+            "step {k}: the crank follows the cursor {st:?}"
+        );
+        let tri = FourBar {
+            s: Sketch::new(),
+            b,
+            c,
+            e: f.e,
+        };
         let o = orientation(sk, &tri);
-        assert_eq!(o.signum(), sign, "step {k}: the coupler triangle turned over");
+        assert_eq!(
+            o.signum(),
+            sign,
+            "step {k}: the coupler triangle turned over"
+        );
         // Continuity: the rocker end moves a little per step, never jumps to the other
         // assembly.
         let now = sk.point(c);
-        assert!(dist(now, last_c) < 0.2, "step {k}: the rocker jumped {}", dist(now, last_c));
+        assert!(
+            dist(now, last_c) < 0.2,
+            "step {k}: the rocker jumped {}",
+            dist(now, last_c)
+        );
         last_c = now;
         assert!((dist(now, [4.0, 0.0]) - 3.0).abs() < 1e-7);
     }
@@ -125,7 +147,10 @@ fn a_point_on_a_fixed_circle_stays_on_it() {
         let q = drag.sketch().point(p);
         assert!((dist(q, [0.0, 0.0]) - 2.0).abs() < TOL, "step {k}");
         // The nearest point of the circle to the cursor.
-        assert!(dist(q, [2.0 * th.cos(), 2.0 * th.sin()]) < 1e-3, "step {k}: {q:?}");
+        assert!(
+            dist(q, [2.0 * th.cos(), 2.0 * th.sin()]) < 1e-3,
+            "step {k}: {q:?}"
+        );
     }
     drop(drag);
     let (ctr, r) = s.circle(circle);
@@ -138,7 +163,9 @@ fn a_free_polyline_keeps_its_lengths_and_its_far_end_moves_least() {
     let pts: Vec<PointId> = (0..6)
         .map(|i| s.add_point(i as f64, 0.3 * (i % 2) as f64).unwrap())
         .collect();
-    let lines: Vec<LineId> = (0..5).map(|i| s.add_line(pts[i], pts[i + 1]).unwrap()).collect();
+    let lines: Vec<LineId> = (0..5)
+        .map(|i| s.add_line(pts[i], pts[i + 1]).unwrap())
+        .collect();
     let len = |s: &Sketch, l: LineId| {
         let [p, q] = s.line(l);
         dist(p, q)
@@ -154,10 +181,22 @@ fn a_free_polyline_keeps_its_lengths_and_its_far_end_moves_least() {
     for (l, want) in lines.iter().zip(&lengths) {
         assert!((len(&s, *l) - want).abs() < TOL);
     }
-    assert!(dist(s.point(pts[0]), [-0.5, 0.8]) < 1e-6, "the grip reaches the cursor");
-    let moved: Vec<f64> = pts.iter().zip(&start).map(|(p, b)| dist(s.point(*p), *b)).collect();
+    assert!(
+        dist(s.point(pts[0]), [-0.5, 0.8]) < 1e-6,
+        "the grip reaches the cursor"
+    );
+    let moved: Vec<f64> = pts
+        .iter()
+        .zip(&start)
+        .map(|(p, b)| dist(s.point(*p), *b))
+        .collect();
     for i in 1..5 {
-        assert!(moved[5] < moved[i], "far end {} vs point {i} {}", moved[5], moved[i]);
+        assert!(
+            moved[5] < moved[i],
+            "far end {} vs point {i} {}",
+            moved[5],
+            moved[i]
+        );
     }
 }
 
@@ -167,4 +206,48 @@ fn a_fixed_point_cannot_be_dragged() {
     let p = s.add_point(0.0, 0.0).unwrap();
     s.fix(p).unwrap();
     assert!(s.drag(p, [1.0, 1.0]).is_err());
+}
+
+#[test]
+fn a_quarter_turn_per_step_is_cut_into_pieces_rather_than_flip() {
+    let mut f = four_bar();
+    let sign = orientation(&f.s, &f).signum();
+    let (b, c, e) = (f.b, f.c, f.e);
+    let mut drag = f.s.begin_drag(b).unwrap();
+    let mut pieces = 0;
+    for k in 1..=8 {
+        let th = std::f64::consts::FRAC_PI_2 * k as f64;
+        let st = drag.step([th.cos(), th.sin()]).unwrap();
+        assert!(st.outcome.is_ok(), "step {k}: {st:?}");
+        pieces += st.pieces;
+        let tri = FourBar {
+            s: Sketch::new(),
+            b,
+            c,
+            e,
+        };
+        assert_eq!(
+            orientation(drag.sketch(), &tri).signum(),
+            sign,
+            "step {k}: {st:?}"
+        );
+        assert!((dist(drag.sketch().point(c), [4.0, 0.0]) - 3.0).abs() < 1e-7);
+    }
+    assert!(pieces >= 8);
+}
+
+#[test]
+fn a_whole_circle_is_dragged_by_its_centre_and_keeps_its_radius() {
+    let mut s = Sketch::new();
+    let c0 = s.add_point(0.0, 0.0).unwrap();
+    let circle = s.add_circle(c0, 1.5).unwrap();
+    let on = s.add_point(1.5, 0.0).unwrap();
+    s.point_on_circle(on, circle).unwrap();
+    s.radius(circle, 1.5).unwrap();
+    let st = s.drag(circle, [3.0, -2.0]).unwrap();
+    assert!(st.reached && st.miss < 1e-7, "{st:?}");
+    let (ctr, r) = s.circle(circle);
+    assert!(dist(ctr, [3.0, -2.0]) < 1e-7 && (r - 1.5).abs() < 1e-9);
+    assert!((dist(s.point(on), ctr) - 1.5).abs() < 1e-9);
+    assert_eq!(s.system().constraints().len(), 2, "no soft constraint left");
 }

@@ -41,14 +41,24 @@ fn examples_validate_load_solve_and_write_back() {
         let r = l.sketch.solve().unwrap();
         assert!(r.outcome.is_ok(), "{}: {r:?}", p.display());
         for (id, _) in l.sketch.constraints() {
-            assert!(l.sketch.measure(id).unwrap().residual < 1e-8, "{}", p.display());
+            assert!(
+                l.sketch.measure(id).unwrap().residual < 1e-8,
+                "{}",
+                p.display()
+            );
         }
         // Written back with the solved coordinates, it validates and reads the same.
         let out = SketchFile::from_sketch(&l.sketch, |s| l.shape_name(s).map(str::to_string));
         let written: Value = serde_json::from_str(&out.to_json()).unwrap();
         assert!(v.iter_errors(&written).next().is_none());
-        let again = SketchFile::from_json(&out.to_json()).unwrap().load().unwrap();
-        assert_eq!(again.shapes.keys().collect::<Vec<_>>(), l.shapes.keys().collect::<Vec<_>>());
+        let again = SketchFile::from_json(&out.to_json())
+            .unwrap()
+            .load()
+            .unwrap();
+        assert_eq!(
+            again.shapes.keys().collect::<Vec<_>>(),
+            l.shapes.keys().collect::<Vec<_>>()
+        );
         let mut a2 = again.sketch;
         let r = a2.solve().unwrap();
         assert!(r.outcome.is_ok());
@@ -80,13 +90,20 @@ fn every_constraint_type_of_the_api_is_in_the_schema() {
         .as_array()
         .unwrap()
         .iter()
-        .map(|v| v["properties"]["type"]["const"].as_str().unwrap().to_string())
+        .map(|v| {
+            v["properties"]["type"]["const"]
+                .as_str()
+                .unwrap()
+                .to_string()
+        })
         .collect();
     let n = String::from("x");
     let all: Vec<Spec<String>> = serde_json::from_value(serde_json::json!(types
         .iter()
-        .map(|t| serde_json::json!({"type": t, "point": n, "shape": n, "line": n, "arc": n,
-            "a": n, "b": n, "value": 1.0, "degrees": 1.0, "axis": "vertical"}))
+        .map(
+            |t| serde_json::json!({"type": t, "point": n, "shape": n, "line": n, "arc": n,
+            "a": n, "b": n, "value": 1.0, "degrees": 1.0, "axis": "vertical"})
+        )
         .collect::<Vec<_>>()))
     .unwrap();
     assert_eq!(all.len(), 25);
@@ -98,18 +115,33 @@ fn every_constraint_type_of_the_api_is_in_the_schema() {
 #[test]
 fn bad_files_name_what_is_wrong() {
     let load = |t: &str| SketchFile::from_json(t).and_then(|f| f.load().map(|_| ()));
-    let err = load(r#"{"sketch": {"points": [{"name": "a", "x": 0, "y": 0}],
-        "lines": [{"name": "l", "a": "a", "b": "nope"}]}}"#)
+    let err = load(
+        r#"{"sketch": {"points": [{"name": "a", "x": 0, "y": 0}],
+        "lines": [{"name": "l", "a": "a", "b": "nope"}]}}"#,
+    )
     .unwrap_err();
-    assert!(matches!(&err, SketchFileError::UnknownName { name, .. } if name == "nope"), "{err}");
-    let err = load(r#"{"sketch": {"points": [{"name": "a", "x": 0, "y": 0}, {"name": "a", "x": 1, "y": 0}]}}"#)
-        .unwrap_err();
+    assert!(
+        matches!(&err, SketchFileError::UnknownName { name, .. } if name == "nope"),
+        "{err}"
+    );
+    let err = load(
+        r#"{"sketch": {"points": [{"name": "a", "x": 0, "y": 0}, {"name": "a", "x": 1, "y": 0}]}}"#,
+    )
+    .unwrap_err();
     assert!(matches!(err, SketchFileError::DuplicateName(_)));
-    let err = load(r#"{"sketch": {"points": [{"name": "a", "x": 0, "y": 0}, {"name": "b", "x": 1, "y": 0}],
-        "constraints": [{"name": "r", "type": "radius", "shape": "a", "value": 1}]}}"#)
+    let err = load(
+        r#"{"sketch": {"points": [{"name": "a", "x": 0, "y": 0}, {"name": "b", "x": 1, "y": 0}],
+        "constraints": [{"name": "r", "type": "radius", "shape": "a", "value": 1}]}}"#,
+    )
     .unwrap_err();
     let msg = err.to_string();
-    assert!(msg.contains("constraint r (radius)") && msg.contains("a circle or an arc"), "{msg}");
-    assert!(matches!(load(r#"{"sketch": {"shapes": []}}"#), Err(SketchFileError::Json(_))));
+    assert!(
+        msg.contains("constraint r (radius)") && msg.contains("a circle or an arc"),
+        "{msg}"
+    );
+    assert!(matches!(
+        load(r#"{"sketch": {"shapes": []}}"#),
+        Err(SketchFileError::Json(_))
+    ));
     assert!(!is_sketch_json(r#"{"params": [], "entities": []}"#));
 }

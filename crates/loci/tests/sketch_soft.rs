@@ -15,15 +15,19 @@ fn len(s: &Sketch, l: LineId) -> f64 {
 /// Three lines joined end to end, and a separate arc.
 fn polyline_and_arc() -> (Sketch, [LineId; 3], loci::sketch::ArcId) {
     let mut s = Sketch::new();
-    let pts = [[0.0, 0.0], [3.0, 1.0], [5.0, 3.0], [6.0, 7.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let pts =
+        [[0.0, 0.0], [3.0, 1.0], [5.0, 3.0], [6.0, 7.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
     let lines = [0, 1, 2].map(|i| s.add_line(pts[i], pts[i + 1]).unwrap());
-    let [c, a, b] = [[10.0, 0.0], [12.0, 0.0], [10.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let [c, a, b] =
+        [[10.0, 0.0], [12.0, 0.0], [10.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
     let arc = s.add_arc(c, a, b).unwrap();
     (s, lines, arc)
 }
 
 fn core_count(s: &Sketch) -> usize {
-    s.constraints().map(|(i, _)| s.core_constraints(i).len()).sum()
+    s.constraints()
+        .map(|(i, _)| s.core_constraints(i).len())
+        .sum()
 }
 
 #[test]
@@ -59,7 +63,9 @@ fn soft_constraints_are_kept_while_solvable() {
     // The arc kept radius and angles.
     let g = s.arc(arc);
     assert!((g.radius - g0.radius).abs() < TOL, "{g:?} {g0:?}");
-    assert!((g.start_angle - g0.start_angle).abs() < 1e-7 && (g.end_angle - g0.end_angle).abs() < 1e-7);
+    assert!(
+        (g.start_angle - g0.start_angle).abs() < 1e-7 && (g.end_angle - g0.end_angle).abs() < 1e-7
+    );
     assert_eq!(s.system().constraints().len(), core_count(&s));
 }
 
@@ -107,7 +113,9 @@ fn a_radius_against_an_arc_keeps_its_angles() {
     assert_eq!(r.dropped, vec![Soft::ArcRadius(arc)]);
     let g = s.arc(arc);
     assert!((g.radius - 3.0).abs() < TOL);
-    assert!((g.start_angle - g0.start_angle).abs() < 1e-7 && (g.end_angle - g0.end_angle).abs() < 1e-7);
+    assert!(
+        (g.start_angle - g0.start_angle).abs() < 1e-7 && (g.end_angle - g0.end_angle).abs() < 1e-7
+    );
 }
 
 #[test]
@@ -136,10 +144,17 @@ fn no_soft_constraint_is_left_behind_after_an_error() {
     let [p, _] = s.line_points(lines[0]);
     {
         let mut d = s.begin_drag(p).unwrap();
-        assert!(d.sketch().system().constraints().len() > n, "soft constraints while dragging");
+        assert!(
+            d.sketch().system().constraints().len() > n,
+            "soft constraints while dragging"
+        );
         assert!(d.step([1.0, 1.0]).is_err());
     }
-    assert_eq!(s.system().constraints().len(), n, "a drag's soft constraints go when it ends");
+    assert_eq!(
+        s.system().constraints().len(),
+        n,
+        "a drag's soft constraints go when it ends"
+    );
     assert_eq!(s.system().params().len(), params);
     s.set_config(Config::default());
     assert!(s.solve().unwrap().outcome.is_ok());

@@ -202,8 +202,7 @@ impl System {
             user,
         };
         if let Some(e) = self.entities.iter().find(|e| {
-            e.h != h
-                && (e.workplane == Some(h) || e.kind.references().iter().any(|&(_, r)| r == h))
+            e.h != h && (e.workplane == Some(h) || e.kind.references().iter().any(|&(_, r)| r == h))
         }) {
             return Err(in_use(ObjectId::Entity(e.h)));
         }

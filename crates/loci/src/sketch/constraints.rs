@@ -286,7 +286,13 @@ impl Sketch {
                 self.want(*arc, n, "arc", &[S::Arc], "an arc").map(drop)?;
             }
             Spec::Lock { shape } => self
-                .want(*shape, n, "shape", &[S::Line, S::Circle, S::Arc], "a line, circle or arc")
+                .want(
+                    *shape,
+                    n,
+                    "shape",
+                    &[S::Line, S::Circle, S::Arc],
+                    "a line, circle or arc",
+                )
                 .map(drop)?,
             Spec::Distance { a, b, .. } | Spec::Coincident { a, b } => {
                 point(a, "a")?;
@@ -328,7 +334,11 @@ impl Sketch {
                 }
                 let cubic_ok = |k: S| matches!(k, S::Line | S::Arc | S::Cubic);
                 if (ka == S::Cubic && !cubic_ok(kb)) || (kb == S::Cubic && !cubic_ok(ka)) {
-                    let (f, s, k) = if ka == S::Cubic { ("b", *b, kb) } else { ("a", *a, ka) };
+                    let (f, s, k) = if ka == S::Cubic {
+                        ("b", *b, kb)
+                    } else {
+                        ("a", *a, ka)
+                    };
                     return Err(SketchError::WrongShape {
                         constraint: n,
                         field: f,
@@ -340,7 +350,9 @@ impl Sketch {
             }
             Spec::PointOnLine { point: p, line: l }
             | Spec::Midpoint { point: p, line: l }
-            | Spec::PointLineDistance { point: p, line: l, .. } => {
+            | Spec::PointLineDistance {
+                point: p, line: l, ..
+            } => {
                 point(p, "point")?;
                 line(l, "line")?;
             }
@@ -452,14 +464,20 @@ impl Sketch {
                 _ => {
                     let g = self.arc(ArcId(shape.0));
                     rec.locked.extend([g.radius, g.start_angle, g.end_angle]);
-                    self.put(rec, core(K::Diameter).ents(shape.0, None).val(2.0 * g.radius))?;
+                    self.put(
+                        rec,
+                        core(K::Diameter).ents(shape.0, None).val(2.0 * g.radius),
+                    )?;
                     let [s0, s1] = self.spokes(*shape);
                     self.put_angle(rec, X_AXIS, s0, g.start_angle)?;
                     self.put_angle(rec, X_AXIS, s1, g.end_angle)?;
                 }
             },
             Spec::Distance { a, b, value } => {
-                self.put(rec, core(K::PtPtDistance).pts(pt(a), Some(pt(b))).val(*value))?;
+                self.put(
+                    rec,
+                    core(K::PtPtDistance).pts(pt(a), Some(pt(b))).val(*value),
+                )?;
             }
             Spec::Coincident { a, b } => {
                 self.put(rec, core(K::PointsCoincident).pts(pt(a), Some(pt(b))))?;
@@ -481,18 +499,31 @@ impl Sketch {
             Spec::EqualRadius { a, b } => {
                 self.put(rec, core(K::EqualRadius).ents(a.0, Some(b.0)))?;
             }
-            Spec::Tangent { a, b, a_end, b_end } => self.write_tangent(rec, *a, *b, *a_end, *b_end)?,
+            Spec::Tangent { a, b, a_end, b_end } => {
+                self.write_tangent(rec, *a, *b, *a_end, *b_end)?
+            }
             Spec::PointOnLine { point, line } => {
-                self.put(rec, core(K::PtOnLine).pts(pt(point), None).ents(line.0, None))?;
+                self.put(
+                    rec,
+                    core(K::PtOnLine).pts(pt(point), None).ents(line.0, None),
+                )?;
             }
             Spec::PointOnCircle { point, shape } => {
-                self.put(rec, core(K::PtOnCircle).pts(pt(point), None).ents(shape.0, None))?;
+                self.put(
+                    rec,
+                    core(K::PtOnCircle).pts(pt(point), None).ents(shape.0, None),
+                )?;
             }
             Spec::Midpoint { point, line } => {
-                self.put(rec, core(K::AtMidpoint).pts(pt(point), None).ents(line.0, None))?;
+                self.put(
+                    rec,
+                    core(K::AtMidpoint).pts(pt(point), None).ents(line.0, None),
+                )?;
             }
             Spec::Symmetric { a, b, line } => {
-                let c = core(K::SymmetricLine).pts(pt(a), Some(pt(b))).ents(line.0, None);
+                let c = core(K::SymmetricLine)
+                    .pts(pt(a), Some(pt(b)))
+                    .ents(line.0, None);
                 self.put(rec, c)?;
             }
             Spec::SymmetricAxis { a, b, axis } => {
@@ -504,7 +535,9 @@ impl Sketch {
                 self.put(rec, core(kind).pts(pt(a), Some(pt(b))))?;
             }
             Spec::PointLineDistance { point, line, value } => {
-                let c = core(K::PtLineDistance).pts(pt(point), None).ents(line.0, None);
+                let c = core(K::PtLineDistance)
+                    .pts(pt(point), None)
+                    .ents(line.0, None);
                 self.put(rec, c.val(*value))?;
             }
             Spec::Collinear { a, b } => {
@@ -524,17 +557,28 @@ impl Sketch {
         a_end: End,
         b_end: End,
     ) -> Result<(), SketchError> {
-        let (ka, kb) = (self.kind(a).expect("checked"), self.kind(b).expect("checked"));
+        let (ka, kb) = (
+            self.kind(a).expect("checked"),
+            self.kind(b).expect("checked"),
+        );
         let end = |e: End| e == End::End;
         match (ka, kb) {
             (S::Line, S::Arc) | (S::Arc, S::Line) => {
-                let (arc, line, e) = if ka == S::Arc { (a, b, a_end) } else { (b, a, b_end) };
+                let (arc, line, e) = if ka == S::Arc {
+                    (a, b, a_end)
+                } else {
+                    (b, a, b_end)
+                };
                 let mut c = core(K::ArcLineTangent).ents(arc.0, Some(line.0));
                 c.other = end(e);
                 self.put(rec, c)?;
             }
             (S::Line, S::Cubic) | (S::Cubic, S::Line) => {
-                let (cu, line, e) = if ka == S::Cubic { (a, b, a_end) } else { (b, a, b_end) };
+                let (cu, line, e) = if ka == S::Cubic {
+                    (a, b, a_end)
+                } else {
+                    (b, a, b_end)
+                };
                 let mut c = core(K::CubicLineTangent).ents(cu.0, Some(line.0));
                 c.other = end(e);
                 self.put(rec, c)?;
@@ -556,7 +600,10 @@ impl Sketch {
                 let foot = [p[0] + t * dx, p[1] + t * dy];
                 let touch = self.hidden_point(rec, foot)?;
                 self.put(rec, core(K::PtOnLine).pts(touch, None).ents(line.0, None))?;
-                self.put(rec, core(K::PtOnCircle).pts(touch, None).ents(circle.0, None))?;
+                self.put(
+                    rec,
+                    core(K::PtOnCircle).pts(touch, None).ents(circle.0, None),
+                )?;
                 let radius = self.hidden_line(rec, self.center_of(circle.0), touch)?;
                 self.put(rec, core(K::Perpendicular).ents(radius, Some(line.0)))?;
             }
@@ -738,7 +785,10 @@ impl Sketch {
     /// # Errors
     /// No such line, or a negative length.
     pub fn length(&mut self, l: LineId, value: f64) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Length { line: l.into(), value })
+        self.add(Spec::Length {
+            line: l.into(),
+            value,
+        })
     }
     /// A horizontal line.
     ///
@@ -759,77 +809,146 @@ impl Sketch {
     /// # Errors
     /// No such circle or arc, or a radius that is not positive.
     pub fn radius(&mut self, s: impl Round, value: f64) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Radius { shape: Self::round(s), value })
+        self.add(Spec::Radius {
+            shape: Self::round(s),
+            value,
+        })
     }
     /// A circle's or arc's diameter.
     ///
     /// # Errors
     /// As [`Sketch::radius`].
-    pub fn diameter(&mut self, s: impl Round, value: f64) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Diameter { shape: Self::round(s), value })
+    pub fn diameter(
+        &mut self,
+        s: impl Round,
+        value: f64,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::Diameter {
+            shape: Self::round(s),
+            value,
+        })
     }
     /// An arc's sweep, counter-clockwise from start to end, in degrees.
     ///
     /// # Errors
     /// No such arc, or a sweep outside (0, 360).
     pub fn arc_sweep(&mut self, a: ArcId, degrees: f64) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::ArcSweep { arc: a.into(), degrees })
+        self.add(Spec::ArcSweep {
+            arc: a.into(),
+            degrees,
+        })
     }
     /// The distance between two points of any shapes.
     ///
     /// # Errors
     /// No such point, the same point twice, or a negative distance.
-    pub fn distance(&mut self, a: PointId, b: PointId, value: f64) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Distance { a: a.into(), b: b.into(), value })
+    pub fn distance(
+        &mut self,
+        a: PointId,
+        b: PointId,
+        value: f64,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::Distance {
+            a: a.into(),
+            b: b.into(),
+            value,
+        })
     }
     /// Two coincident points.
     ///
     /// # Errors
     /// No such point, or the same point twice.
-    pub fn coincident(&mut self, a: PointId, b: PointId) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Coincident { a: a.into(), b: b.into() })
+    pub fn coincident(
+        &mut self,
+        a: PointId,
+        b: PointId,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::Coincident {
+            a: a.into(),
+            b: b.into(),
+        })
     }
     /// Two circles or arcs with one centre.
     ///
     /// # Errors
     /// No such shape, or the same twice.
-    pub fn concentric(&mut self, a: impl Round, b: impl Round) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Concentric { a: Self::round(a), b: Self::round(b) })
+    pub fn concentric(
+        &mut self,
+        a: impl Round,
+        b: impl Round,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::Concentric {
+            a: Self::round(a),
+            b: Self::round(b),
+        })
     }
     /// Two parallel lines.
     ///
     /// # Errors
     /// No such line, or the same line twice.
     pub fn parallel(&mut self, a: LineId, b: LineId) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Parallel { a: a.into(), b: b.into() })
+        self.add(Spec::Parallel {
+            a: a.into(),
+            b: b.into(),
+        })
     }
     /// Two perpendicular lines.
     ///
     /// # Errors
     /// No such line, or the same line twice.
-    pub fn perpendicular(&mut self, a: LineId, b: LineId) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Perpendicular { a: a.into(), b: b.into() })
+    pub fn perpendicular(
+        &mut self,
+        a: LineId,
+        b: LineId,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::Perpendicular {
+            a: a.into(),
+            b: b.into(),
+        })
     }
     /// The signed angle from line `a` to line `b`, counter-clockwise, in degrees.
     ///
     /// # Errors
     /// No such line, the same line twice, or an angle that is not finite.
-    pub fn angle(&mut self, a: LineId, b: LineId, degrees: f64) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Angle { a: a.into(), b: b.into(), degrees })
+    pub fn angle(
+        &mut self,
+        a: LineId,
+        b: LineId,
+        degrees: f64,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::Angle {
+            a: a.into(),
+            b: b.into(),
+            degrees,
+        })
     }
     /// Two lines of equal length.
     ///
     /// # Errors
     /// No such line, or the same line twice.
-    pub fn equal_length(&mut self, a: LineId, b: LineId) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::EqualLength { a: a.into(), b: b.into() })
+    pub fn equal_length(
+        &mut self,
+        a: LineId,
+        b: LineId,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::EqualLength {
+            a: a.into(),
+            b: b.into(),
+        })
     }
     /// Two circles or arcs of equal radius.
     ///
     /// # Errors
     /// No such shape, or the same twice.
-    pub fn equal_radius(&mut self, a: impl Round, b: impl Round) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::EqualRadius { a: Self::round(a), b: Self::round(b) })
+    pub fn equal_radius(
+        &mut self,
+        a: impl Round,
+        b: impl Round,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::EqualRadius {
+            a: Self::round(a),
+            b: Self::round(b),
+        })
     }
     /// Two tangent shapes; `a_end` and `b_end` choose the ends of arcs and cubics.
     ///
@@ -842,56 +961,108 @@ impl Sketch {
         b: impl Into<ShapeId>,
         b_end: End,
     ) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Tangent { a: a.into(), b: b.into(), a_end, b_end })
+        self.add(Spec::Tangent {
+            a: a.into(),
+            b: b.into(),
+            a_end,
+            b_end,
+        })
     }
     /// A point on a line (extended).
     ///
     /// # Errors
     /// No such point or line.
-    pub fn point_on_line(&mut self, p: PointId, l: LineId) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::PointOnLine { point: p.into(), line: l.into() })
+    pub fn point_on_line(
+        &mut self,
+        p: PointId,
+        l: LineId,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::PointOnLine {
+            point: p.into(),
+            line: l.into(),
+        })
     }
     /// A point on a circle or arc.
     ///
     /// # Errors
     /// No such point or shape.
-    pub fn point_on_circle(&mut self, p: PointId, s: impl Round) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::PointOnCircle { point: p.into(), shape: Self::round(s) })
+    pub fn point_on_circle(
+        &mut self,
+        p: PointId,
+        s: impl Round,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::PointOnCircle {
+            point: p.into(),
+            shape: Self::round(s),
+        })
     }
     /// A point at a line's midpoint.
     ///
     /// # Errors
     /// No such point or line.
     pub fn midpoint(&mut self, p: PointId, l: LineId) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Midpoint { point: p.into(), line: l.into() })
+        self.add(Spec::Midpoint {
+            point: p.into(),
+            line: l.into(),
+        })
     }
     /// Two points mirrored about a line.
     ///
     /// # Errors
     /// No such point or line, or the same point twice.
-    pub fn symmetric(&mut self, a: PointId, b: PointId, l: LineId) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Symmetric { a: a.into(), b: b.into(), line: l.into() })
+    pub fn symmetric(
+        &mut self,
+        a: PointId,
+        b: PointId,
+        l: LineId,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::Symmetric {
+            a: a.into(),
+            b: b.into(),
+            line: l.into(),
+        })
     }
     /// Two points mirrored about an axis of the sketch.
     ///
     /// # Errors
     /// No such point, or the same point twice.
-    pub fn symmetric_axis(&mut self, a: PointId, b: PointId, axis: Axis) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::SymmetricAxis { a: a.into(), b: b.into(), axis })
+    pub fn symmetric_axis(
+        &mut self,
+        a: PointId,
+        b: PointId,
+        axis: Axis,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::SymmetricAxis {
+            a: a.into(),
+            b: b.into(),
+            axis,
+        })
     }
     /// The signed distance from a point to a line (positive to the right of its direction).
     ///
     /// # Errors
     /// No such point or line.
-    pub fn point_line_distance(&mut self, p: PointId, l: LineId, value: f64) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::PointLineDistance { point: p.into(), line: l.into(), value })
+    pub fn point_line_distance(
+        &mut self,
+        p: PointId,
+        l: LineId,
+        value: f64,
+    ) -> Result<SketchConstraintId, SketchError> {
+        self.add(Spec::PointLineDistance {
+            point: p.into(),
+            line: l.into(),
+            value,
+        })
     }
     /// Line `b` on line `a` (extended).
     ///
     /// # Errors
     /// No such line, or the same line twice.
     pub fn collinear(&mut self, a: LineId, b: LineId) -> Result<SketchConstraintId, SketchError> {
-        self.add(Spec::Collinear { a: a.into(), b: b.into() })
+        self.add(Spec::Collinear {
+            a: a.into(),
+            b: b.into(),
+        })
     }
 }
 

@@ -74,7 +74,11 @@ impl Sketch {
         // The grip should reach the cursor wherever the constraints allow: its parameters
         // weigh far more than the rest.
         let scale = self.cfg.dragged_scale.min(DRAGGED_SCALE);
-        let cfg = self.cfg.clone().with_find_failed(false).with_dragged_scale(scale);
+        let cfg = self
+            .cfg
+            .clone()
+            .with_find_failed(false)
+            .with_dragged_scale(scale);
         self.restore_fixed();
         let ix = |p: PointId| self.point_indexes(p);
         let triangles = self.triangles().into_iter().map(|t| t.map(ix)).collect();
@@ -139,7 +143,10 @@ impl Sketch {
         }
         for (_, spec) in self.constraints() {
             if let Spec::Coincident { a, b } = spec {
-                let (ra, rb) = (find(&mut parent, PointId(a.0)), find(&mut parent, PointId(b.0)));
+                let (ra, rb) = (
+                    find(&mut parent, PointId(a.0)),
+                    find(&mut parent, PointId(b.0)),
+                );
                 if ra != rb {
                     parent.insert(ra.max(rb), ra.min(rb));
                 }
@@ -278,7 +285,8 @@ impl Drag<'_> {
                 self.sketch.sys.set_value(p, want);
             }
         }
-        self.sketch.write_soft(&mut self.soft, &soft_values, compiling);
+        self.sketch
+            .write_soft(&mut self.soft, &soft_values, compiling);
         let report = self.solver.solve(&mut self.sketch.sys)?;
         self.compiled = Some(self.sketch.sys.revision());
         let flipped = report.outcome.is_ok() && self.flipped(&before);
@@ -315,7 +323,11 @@ impl Drag<'_> {
             let scale = a.abs().max(b.abs());
             scale > 0.0 && a * b < 0.0 && a.abs() > 1e-9 * scale.max(1.0)
         });
-        let arcs = before.1.iter().zip(&now.1).any(|(a, b)| (a - b).abs() > 180.0);
+        let arcs = before
+            .1
+            .iter()
+            .zip(&now.1)
+            .any(|(a, b)| (a - b).abs() > 180.0);
         tri || arcs
     }
 

@@ -1,6 +1,8 @@
 //! Reading a user constraint back: the value it measures now and how far it is from holding.
 
-use super::{ArcId, Axis, LineId, PointId, ShapeId, ShapeKind, Sketch, SketchConstraintId, SketchError, Spec};
+use super::{
+    ArcId, Axis, LineId, PointId, ShapeId, ShapeKind, Sketch, SketchConstraintId, SketchError, Spec,
+};
 
 /// A constraint read back from the current coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,7 +64,10 @@ impl Sketch {
     /// # Errors
     /// No such constraint.
     pub fn measure(&self, id: SketchConstraintId) -> Result<Measured, SketchError> {
-        let rec = self.constraints.get(&id).ok_or(SketchError::NoConstraint(id))?;
+        let rec = self
+            .constraints
+            .get(&id)
+            .ok_or(SketchError::NoConstraint(id))?;
         let (value, residual) = self.evaluate(&rec.spec, &rec.locked, &rec.fixed);
         Ok(Measured {
             value,
@@ -146,11 +151,16 @@ impl Sketch {
                 let d = self.radius_of(a.0) - self.radius_of(b.0);
                 (Some(d), d.abs())
             }
-            Spec::Tangent { a, b, a_end, b_end } => (None, self.tangent_residual(*a, *b, *a_end, *b_end)),
+            Spec::Tangent { a, b, a_end, b_end } => {
+                (None, self.tangent_residual(*a, *b, *a_end, *b_end))
+            }
             Spec::PointOnLine { point, line } => (None, self.side(self.pt(point), *line).abs()),
             Spec::PointOnCircle { point, shape } => {
                 let c = self.point(self.center_of(shape.0));
-                (None, diff(norm(sub(self.pt(point), c)), self.radius_of(shape.0)))
+                (
+                    None,
+                    diff(norm(sub(self.pt(point), c)), self.radius_of(shape.0)),
+                )
             }
             Spec::Midpoint { point, line } => {
                 let [p, q] = self.line(LineId(line.0));
@@ -188,16 +198,29 @@ impl Sketch {
     /// the centres against the sum or difference of the radii (whichever is nearer).
     /// Between lines, arcs and cubics (tangent at their ends): the sine of the angle between
     /// their directions at the chosen ends.
-    fn tangent_residual(&self, a: ShapeId, b: ShapeId, a_end: super::End, b_end: super::End) -> f64 {
+    fn tangent_residual(
+        &self,
+        a: ShapeId,
+        b: ShapeId,
+        a_end: super::End,
+        b_end: super::End,
+    ) -> f64 {
         let (ka, kb) = (self.kind(a), self.kind(b));
         let circle = Some(ShapeKind::Circle);
         if ka == circle || kb == circle {
             if ka == Some(ShapeKind::Line) || kb == Some(ShapeKind::Line) {
-                let (l, c) = if ka == Some(ShapeKind::Line) { (a, b) } else { (b, a) };
+                let (l, c) = if ka == Some(ShapeKind::Line) {
+                    (a, b)
+                } else {
+                    (b, a)
+                };
                 let center = self.point(self.center_of(c.0));
                 return (self.side(center, l).abs() - self.radius_of(c.0)).abs();
             }
-            let (ca, cb) = (self.point(self.center_of(a.0)), self.point(self.center_of(b.0)));
+            let (ca, cb) = (
+                self.point(self.center_of(a.0)),
+                self.point(self.center_of(b.0)),
+            );
             let (ra, rb) = (self.radius_of(a.0), self.radius_of(b.0));
             let d = norm(sub(ca, cb));
             return (d - (ra + rb)).abs().min((d - (ra - rb).abs()).abs());
@@ -213,7 +236,11 @@ impl Sketch {
             Some(ShapeKind::Line) => self.dir(s),
             Some(ShapeKind::Cubic) => {
                 let c = self.cubic(super::CubicId(s.0));
-                if at_end { sub(c[3], c[2]) } else { sub(c[1], c[0]) }
+                if at_end {
+                    sub(c[3], c[2])
+                } else {
+                    sub(c[1], c[0])
+                }
             }
             _ => {
                 let g = self.arc(ArcId(s.0));
@@ -224,4 +251,3 @@ impl Sketch {
         }
     }
 }
-

@@ -34,15 +34,15 @@ mod shapes;
 mod soft;
 mod spec;
 
+pub use constraints::Round;
 pub use drag::{Drag, DragStep};
 pub use error::SketchError;
 pub use ids::{
     ArcId, Axis, CircleId, CubicId, End, LineId, PointId, ShapeId, ShapeKind, SketchConstraintId,
 };
-pub use constraints::Round;
 pub use measure::Measured;
 pub use shapes::{ArcGeometry, Removed};
-pub use soft::{Soft, SketchReport};
+pub use soft::{SketchReport, Soft};
 pub use spec::Spec;
 
 use crate::model::{ConstraintId, Entity, EntityId, GroupId, Param, ParamId, System};
@@ -90,7 +90,15 @@ impl Sketch {
         let mut sys = System::new();
         let g = Self::WORKPLANE_GROUP.0;
         // Origin, normal (identity quaternion), and the two ends of the x axis.
-        for (h, v) in [(1, 0.0), (2, 0.0), (3, 0.0), (4, 1.0), (5, 0.0), (6, 0.0), (7, 0.0)] {
+        for (h, v) in [
+            (1, 0.0),
+            (2, 0.0),
+            (3, 0.0),
+            (4, 1.0),
+            (5, 0.0),
+            (6, 0.0),
+            (7, 0.0),
+        ] {
             sys.add_param(Param::new(h, g, v)).expect("fresh handle");
         }
         for (h, v) in [(8, 0.0), (9, 0.0), (10, 1.0), (11, 0.0)] {
@@ -147,9 +155,7 @@ impl Sketch {
     fn param(&mut self, v: f64) -> Result<ParamId, SketchError> {
         let h = self.next_param;
         self.next_param += 1;
-        Ok(self
-            .sys
-            .add_param(Param::new(h, Self::SHAPE_GROUP.0, v))?)
+        Ok(self.sys.add_param(Param::new(h, Self::SHAPE_GROUP.0, v))?)
     }
 
     fn entity_handle(&mut self) -> u32 {

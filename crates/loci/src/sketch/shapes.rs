@@ -11,14 +11,31 @@ use std::collections::BTreeSet;
 #[derive(Clone, Debug)]
 pub(crate) enum Geometry {
     /// Its two coordinates and their positions in the parameter vector.
-    Point { params: [ParamId; 2], ix: [usize; 2] },
-    Line { points: [PointId; 2] },
+    Point {
+        params: [ParamId; 2],
+        ix: [usize; 2],
+    },
+    Line {
+        points: [PointId; 2],
+    },
     /// The radius is a distance entity holding one parameter.
-    Circle { center: PointId, radius: EntityId, param: ParamId, ix: usize },
+    Circle {
+        center: PointId,
+        radius: EntityId,
+        param: ParamId,
+        ix: usize,
+    },
     /// `spokes` are hidden lines from the centre to the start and to the end, which angle
     /// constraints on the arc's ends are written on.
-    Arc { center: PointId, start: PointId, end: PointId, spokes: [EntityId; 2] },
-    Cubic { points: [PointId; 4] },
+    Arc {
+        center: PointId,
+        start: PointId,
+        end: PointId,
+        spokes: [EntityId; 2],
+    },
+    Cubic {
+        points: [PointId; 4],
+    },
 }
 
 #[derive(Clone, Debug)]
@@ -44,7 +61,9 @@ impl Geometry {
             Geometry::Point { .. } => vec![PointId(me)],
             Geometry::Line { points } => points.to_vec(),
             Geometry::Circle { center, .. } => vec![*center],
-            Geometry::Arc { center, start, end, .. } => vec![*center, *start, *end],
+            Geometry::Arc {
+                center, start, end, ..
+            } => vec![*center, *start, *end],
             Geometry::Cubic { points } => points.to_vec(),
         }
     }
@@ -201,12 +220,30 @@ impl Sketch {
         }
         let g = Self::SHAPE_GROUP.0;
         let (s0, s1) = (self.entity_handle(), self.entity_handle());
-        self.sys
-            .add_entity(Entity::line(s0, g, Some(WORKPLANE.0), center.0 .0, start.0 .0))?;
-        self.sys
-            .add_entity(Entity::line(s1, g, Some(WORKPLANE.0), center.0 .0, end.0 .0))?;
+        self.sys.add_entity(Entity::line(
+            s0,
+            g,
+            Some(WORKPLANE.0),
+            center.0 .0,
+            start.0 .0,
+        ))?;
+        self.sys.add_entity(Entity::line(
+            s1,
+            g,
+            Some(WORKPLANE.0),
+            center.0 .0,
+            end.0 .0,
+        ))?;
         let h = self.entity_handle();
-        let e = Entity::arc(h, g, WORKPLANE.0, NORMAL_2D.0, center.0 .0, start.0 .0, end.0 .0);
+        let e = Entity::arc(
+            h,
+            g,
+            WORKPLANE.0,
+            NORMAL_2D.0,
+            center.0 .0,
+            start.0 .0,
+            end.0 .0,
+        );
         Ok(ArcId(self.insert(
             e,
             Geometry::Arc {
@@ -333,7 +370,9 @@ impl Sketch {
     #[must_use]
     pub fn arc_points(&self, a: ArcId) -> [PointId; 3] {
         match &self.shapes[&a.0].geometry {
-            Geometry::Arc { center, start, end, .. } => [*center, *start, *end],
+            Geometry::Arc {
+                center, start, end, ..
+            } => [*center, *start, *end],
             _ => unreachable!("an arc handle names an arc"),
         }
     }
@@ -403,7 +442,9 @@ impl Sketch {
     #[must_use]
     pub fn circle(&self, c: CircleId) -> ([f64; 2], f64) {
         match &self.shapes[&c.0].geometry {
-            Geometry::Circle { center, ix, .. } => (self.point(*center), self.sys.params()[*ix].val),
+            Geometry::Circle { center, ix, .. } => {
+                (self.point(*center), self.sys.params()[*ix].val)
+            }
             _ => unreachable!("a circle handle names a circle"),
         }
     }
@@ -477,7 +518,8 @@ impl Sketch {
         constraint: &'static str,
         field: &'static str,
     ) -> Result<(), SketchError> {
-        self.want(s, constraint, field, &[ShapeKind::Point], "a point").map(drop)
+        self.want(s, constraint, field, &[ShapeKind::Point], "a point")
+            .map(drop)
     }
 
     /// Checks that `s` exists and is one of `kinds`.

@@ -5,7 +5,9 @@
 
 use super::measure::wrap_deg;
 use super::shapes::Geometry;
-use super::{ArcId, LineId, PointId, ShapeId, Sketch, SketchConstraintId, SketchError, Spec, X_AXIS};
+use super::{
+    ArcId, LineId, PointId, ShapeId, Sketch, SketchConstraintId, SketchError, Spec, X_AXIS,
+};
 use crate::diagnose::Member;
 use crate::model::{Constraint, ConstraintId, ConstraintKind as K, EntityId};
 use crate::solve::{Outcome, Report};
@@ -90,7 +92,9 @@ impl Sketch {
                         out.push(Soft::LineLength(LineId(*h)));
                     }
                 }
-                Geometry::Arc { center, start, end, .. } => {
+                Geometry::Arc {
+                    center, start, end, ..
+                } => {
                     let locked = self.constraints.values().any(|r| {
                         !r.reference
                             && matches!(r.spec, Spec::Lock { shape } | Spec::FixShape { shape } if shape.0 == *h)
@@ -142,7 +146,13 @@ impl Sketch {
             let c = match s {
                 Soft::LineLength(l) => {
                     let [a, b] = self.line_points(l);
-                    Constraint { kind: K::PtPtDistance, pt_a: Some(a.0), pt_b: Some(b.0), val: v, ..c }
+                    Constraint {
+                        kind: K::PtPtDistance,
+                        pt_a: Some(a.0),
+                        pt_b: Some(b.0),
+                        val: v,
+                        ..c
+                    }
                 }
                 Soft::ArcRadius(a) => Constraint {
                     kind: K::Diameter,
@@ -178,7 +188,12 @@ impl Sketch {
                         }
                     };
                     let [a, b] = pts.map(|p| self.point_indexes(p));
-                    out.push(SoftRec { soft: s, core, ix: [a[0], a[1], b[0], b[1]], sign: 1.0 });
+                    out.push(SoftRec {
+                        soft: s,
+                        core,
+                        ix: [a[0], a[1], b[0], b[1]],
+                        sign: 1.0,
+                    });
                 }
                 Err(e) => {
                     self.remove_soft(&out);
@@ -221,7 +236,11 @@ impl Sketch {
                 Soft::ArcStart(a) | Soft::ArcEnd(a) => {
                     if compiling {
                         let g = self.arc(a);
-                        let p = if matches!(r.soft, Soft::ArcStart(_)) { g.start } else { g.end };
+                        let p = if matches!(r.soft, Soft::ArcStart(_)) {
+                            g.start
+                        } else {
+                            g.end
+                        };
                         // The core's spoke runs centre minus point; the axis is (-1, 0).
                         let cross = -(g.center[1] - p[1]);
                         r.sign = if cross < 0.0 { -1.0 } else { 1.0 };
@@ -231,7 +250,11 @@ impl Sketch {
             };
             // Most soft constraints of a drag keep their value from step to step: only
             // those that changed are written.
-            if self.sys.constraint(r.core).is_some_and(|c| c.val.to_bits() != val.to_bits()) {
+            if self
+                .sys
+                .constraint(r.core)
+                .is_some_and(|c| c.val.to_bits() != val.to_bits())
+            {
                 if let Some(mut c) = self.sys.constraint_mut(r.core) {
                     c.val = val;
                 }
@@ -326,7 +349,13 @@ impl Sketch {
                         Member::Entity(_) => None,
                     })
                     .filter_map(|id| self.constraints.get(id))
-                    .flat_map(|r| r.spec.shapes().into_iter().map(|(_, s)| s.0).collect::<Vec<_>>())
+                    .flat_map(|r| {
+                        r.spec
+                            .shapes()
+                            .into_iter()
+                            .map(|(_, s)| s.0)
+                            .collect::<Vec<_>>()
+                    })
                     .collect();
                 let pick = mine
                     .iter()
@@ -343,9 +372,18 @@ impl Sketch {
         Ok(Vec::new())
     }
 
-    fn report(&self, r: &Report, soft: &[SoftRec], active: &[usize], dropped: Vec<Soft>) -> SketchReport {
-        let failed: BTreeSet<SketchConstraintId> =
-            r.failed.iter().filter_map(|c| self.owner.get(c).copied()).collect();
+    fn report(
+        &self,
+        r: &Report,
+        soft: &[SoftRec],
+        active: &[usize],
+        dropped: Vec<Soft>,
+    ) -> SketchReport {
+        let failed: BTreeSet<SketchConstraintId> = r
+            .failed
+            .iter()
+            .filter_map(|c| self.owner.get(c).copied())
+            .collect();
         let outcome = match r.outcome {
             Outcome::RedundantOkay if failed.is_empty() => Outcome::Okay,
             o => o,

@@ -298,42 +298,113 @@ impl<R> Spec<R> {
     ///
     /// # Errors
     /// Whatever `f` returns for a shape it cannot name.
-    pub fn try_map<S, E>(&self, mut f: impl FnMut(&'static str, &R) -> Result<S, E>) -> Result<Spec<S>, E> {
+    pub fn try_map<S, E>(
+        &self,
+        mut f: impl FnMut(&'static str, &R) -> Result<S, E>,
+    ) -> Result<Spec<S>, E> {
         Ok(match self {
-            Spec::Fix { point } => Spec::Fix { point: f("point", point)? },
-            Spec::FixShape { shape } => Spec::FixShape { shape: f("shape", shape)? },
-            Spec::Length { line, value } => Spec::Length { line: f("line", line)?, value: *value },
-            Spec::Horizontal { line } => Spec::Horizontal { line: f("line", line)? },
-            Spec::Vertical { line } => Spec::Vertical { line: f("line", line)? },
-            Spec::Radius { shape, value } => Spec::Radius { shape: f("shape", shape)?, value: *value },
-            Spec::Diameter { shape, value } => Spec::Diameter { shape: f("shape", shape)?, value: *value },
-            Spec::ArcSweep { arc, degrees } => Spec::ArcSweep { arc: f("arc", arc)?, degrees: *degrees },
-            Spec::Lock { shape } => Spec::Lock { shape: f("shape", shape)? },
-            Spec::Distance { a, b, value } => Spec::Distance { a: f("a", a)?, b: f("b", b)?, value: *value },
-            Spec::Coincident { a, b } => Spec::Coincident { a: f("a", a)?, b: f("b", b)? },
-            Spec::Concentric { a, b } => Spec::Concentric { a: f("a", a)?, b: f("b", b)? },
-            Spec::Parallel { a, b } => Spec::Parallel { a: f("a", a)?, b: f("b", b)? },
-            Spec::Perpendicular { a, b } => Spec::Perpendicular { a: f("a", a)?, b: f("b", b)? },
-            Spec::Angle { a, b, degrees } => Spec::Angle { a: f("a", a)?, b: f("b", b)?, degrees: *degrees },
-            Spec::EqualLength { a, b } => Spec::EqualLength { a: f("a", a)?, b: f("b", b)? },
-            Spec::EqualRadius { a, b } => Spec::EqualRadius { a: f("a", a)?, b: f("b", b)? },
+            Spec::Fix { point } => Spec::Fix {
+                point: f("point", point)?,
+            },
+            Spec::FixShape { shape } => Spec::FixShape {
+                shape: f("shape", shape)?,
+            },
+            Spec::Length { line, value } => Spec::Length {
+                line: f("line", line)?,
+                value: *value,
+            },
+            Spec::Horizontal { line } => Spec::Horizontal {
+                line: f("line", line)?,
+            },
+            Spec::Vertical { line } => Spec::Vertical {
+                line: f("line", line)?,
+            },
+            Spec::Radius { shape, value } => Spec::Radius {
+                shape: f("shape", shape)?,
+                value: *value,
+            },
+            Spec::Diameter { shape, value } => Spec::Diameter {
+                shape: f("shape", shape)?,
+                value: *value,
+            },
+            Spec::ArcSweep { arc, degrees } => Spec::ArcSweep {
+                arc: f("arc", arc)?,
+                degrees: *degrees,
+            },
+            Spec::Lock { shape } => Spec::Lock {
+                shape: f("shape", shape)?,
+            },
+            Spec::Distance { a, b, value } => Spec::Distance {
+                a: f("a", a)?,
+                b: f("b", b)?,
+                value: *value,
+            },
+            Spec::Coincident { a, b } => Spec::Coincident {
+                a: f("a", a)?,
+                b: f("b", b)?,
+            },
+            Spec::Concentric { a, b } => Spec::Concentric {
+                a: f("a", a)?,
+                b: f("b", b)?,
+            },
+            Spec::Parallel { a, b } => Spec::Parallel {
+                a: f("a", a)?,
+                b: f("b", b)?,
+            },
+            Spec::Perpendicular { a, b } => Spec::Perpendicular {
+                a: f("a", a)?,
+                b: f("b", b)?,
+            },
+            Spec::Angle { a, b, degrees } => Spec::Angle {
+                a: f("a", a)?,
+                b: f("b", b)?,
+                degrees: *degrees,
+            },
+            Spec::EqualLength { a, b } => Spec::EqualLength {
+                a: f("a", a)?,
+                b: f("b", b)?,
+            },
+            Spec::EqualRadius { a, b } => Spec::EqualRadius {
+                a: f("a", a)?,
+                b: f("b", b)?,
+            },
             Spec::Tangent { a, b, a_end, b_end } => Spec::Tangent {
                 a: f("a", a)?,
                 b: f("b", b)?,
                 a_end: *a_end,
                 b_end: *b_end,
             },
-            Spec::PointOnLine { point, line } => Spec::PointOnLine { point: f("point", point)?, line: f("line", line)? },
-            Spec::PointOnCircle { point, shape } => Spec::PointOnCircle { point: f("point", point)?, shape: f("shape", shape)? },
-            Spec::Midpoint { point, line } => Spec::Midpoint { point: f("point", point)?, line: f("line", line)? },
-            Spec::Symmetric { a, b, line } => Spec::Symmetric { a: f("a", a)?, b: f("b", b)?, line: f("line", line)? },
-            Spec::SymmetricAxis { a, b, axis } => Spec::SymmetricAxis { a: f("a", a)?, b: f("b", b)?, axis: *axis },
+            Spec::PointOnLine { point, line } => Spec::PointOnLine {
+                point: f("point", point)?,
+                line: f("line", line)?,
+            },
+            Spec::PointOnCircle { point, shape } => Spec::PointOnCircle {
+                point: f("point", point)?,
+                shape: f("shape", shape)?,
+            },
+            Spec::Midpoint { point, line } => Spec::Midpoint {
+                point: f("point", point)?,
+                line: f("line", line)?,
+            },
+            Spec::Symmetric { a, b, line } => Spec::Symmetric {
+                a: f("a", a)?,
+                b: f("b", b)?,
+                line: f("line", line)?,
+            },
+            Spec::SymmetricAxis { a, b, axis } => Spec::SymmetricAxis {
+                a: f("a", a)?,
+                b: f("b", b)?,
+                axis: *axis,
+            },
             Spec::PointLineDistance { point, line, value } => Spec::PointLineDistance {
                 point: f("point", point)?,
                 line: f("line", line)?,
                 value: *value,
             },
-            Spec::Collinear { a, b } => Spec::Collinear { a: f("a", a)?, b: f("b", b)? },
+            Spec::Collinear { a, b } => Spec::Collinear {
+                a: f("a", a)?,
+                b: f("b", b)?,
+            },
         })
     }
 }

@@ -19,7 +19,6 @@ mod write;
 
 pub use read::{LoadedSketch, SketchFileError};
 
-
 use crate::sketch::Spec;
 use serde::{Deserialize, Serialize};
 
@@ -158,4 +157,3 @@ pub fn is_sketch_json(text: &str) -> bool {
     }
     serde_json::from_str::<Probe>(text).is_ok_and(|p| p.sketch.is_some())
 }
-

@@ -50,13 +50,19 @@ impl LoadedSketch {
     /// The name of a shape.
     #[must_use]
     pub fn shape_name(&self, s: ShapeId) -> Option<&str> {
-        self.shapes.iter().find(|(_, v)| **v == s).map(|(k, _)| k.as_str())
+        self.shapes
+            .iter()
+            .find(|(_, v)| **v == s)
+            .map(|(k, _)| k.as_str())
     }
 
     /// The name of a constraint.
     #[must_use]
     pub fn constraint_name(&self, c: SketchConstraintId) -> Option<&str> {
-        self.constraints.iter().find(|(_, v)| **v == c).map(|(k, _)| k.as_str())
+        self.constraints
+            .iter()
+            .find(|(_, v)| **v == c)
+            .map(|(k, _)| k.as_str())
     }
 }
 
@@ -99,11 +105,14 @@ fn load(d: &SketchData) -> Result<LoadedSketch, SketchFileError> {
         Ok(())
     };
     let look = |names: &BTreeMap<String, ShapeId>, owner: &str, field: &'static str, n: &str| {
-        names.get(n).copied().ok_or_else(|| SketchFileError::UnknownName {
-            owner: owner.to_string(),
-            field,
-            name: n.to_string(),
-        })
+        names
+            .get(n)
+            .copied()
+            .ok_or_else(|| SketchFileError::UnknownName {
+                owner: owner.to_string(),
+                field,
+                name: n.to_string(),
+            })
     };
     let point = |s: &Sketch, names: &BTreeMap<String, ShapeId>, owner: &str, field, n: &str| {
         let id = look(names, owner, field, n)?;
@@ -120,20 +129,23 @@ fn load(d: &SketchData) -> Result<LoadedSketch, SketchFileError> {
     };
     for p in &d.points {
         let id = s.add_point(p.x, p.y).map_err(sk(&p.name))?;
-        s.set_construction(id, p.construction).map_err(sk(&p.name))?;
+        s.set_construction(id, p.construction)
+            .map_err(sk(&p.name))?;
         name(&p.name, id.into(), &mut names)?;
     }
     for l in &d.lines {
         let a = point(&s, &names, &l.name, "a", &l.a)?;
         let b = point(&s, &names, &l.name, "b", &l.b)?;
         let id = s.add_line(a, b).map_err(sk(&l.name))?;
-        s.set_construction(id, l.construction).map_err(sk(&l.name))?;
+        s.set_construction(id, l.construction)
+            .map_err(sk(&l.name))?;
         name(&l.name, id.into(), &mut names)?;
     }
     for c in &d.circles {
         let ctr = point(&s, &names, &c.name, "center", &c.center)?;
         let id = s.add_circle(ctr, c.radius).map_err(sk(&c.name))?;
-        s.set_construction(id, c.construction).map_err(sk(&c.name))?;
+        s.set_construction(id, c.construction)
+            .map_err(sk(&c.name))?;
         name(&c.name, id.into(), &mut names)?;
     }
     for a in &d.arcs {
@@ -141,7 +153,8 @@ fn load(d: &SketchData) -> Result<LoadedSketch, SketchFileError> {
         let st = point(&s, &names, &a.name, "start", &a.start)?;
         let en = point(&s, &names, &a.name, "end", &a.end)?;
         let id = s.add_arc(ctr, st, en).map_err(sk(&a.name))?;
-        s.set_construction(id, a.construction).map_err(sk(&a.name))?;
+        s.set_construction(id, a.construction)
+            .map_err(sk(&a.name))?;
         name(&a.name, id.into(), &mut names)?;
     }
     for c in &d.cubics {
@@ -152,7 +165,8 @@ fn load(d: &SketchData) -> Result<LoadedSketch, SketchFileError> {
         let id = s
             .add_cubic([pts[0], pts[1], pts[2], pts[3]])
             .map_err(sk(&c.name))?;
-        s.set_construction(id, c.construction).map_err(sk(&c.name))?;
+        s.set_construction(id, c.construction)
+            .map_err(sk(&c.name))?;
         name(&c.name, id.into(), &mut names)?;
     }
     let mut constraints = BTreeMap::new();

@@ -1,6 +1,8 @@
 //! Writing a [`Sketch`] as a sketch file, with its current coordinates.
 
-use super::{ArcData, CircleData, ConstraintData, CubicData, LineData, PointData, SketchData, SketchFile};
+use super::{
+    ArcData, CircleData, ConstraintData, CubicData, LineData, PointData, SketchData, SketchFile,
+};
 use crate::sketch::{ShapeId, ShapeKind, Sketch};
 
 impl SketchFile {
@@ -22,7 +24,12 @@ impl SketchFile {
             match kind {
                 ShapeKind::Point => {
                     let [x, y] = sketch.point(sketch.as_point(s).expect("a point"));
-                    d.points.push(PointData { name: n, x, y, construction });
+                    d.points.push(PointData {
+                        name: n,
+                        x,
+                        y,
+                        construction,
+                    });
                 }
                 ShapeKind::Line => {
                     let [a, b] = sketch.line_points(sketch.as_line(s).expect("a line"));
@@ -53,11 +60,19 @@ impl SketchFile {
                     });
                 }
                 ShapeKind::Cubic => {
-                    let pts = sketch.defining_points(s).into_iter().map(|p| label(p.into()));
+                    let pts = sketch
+                        .defining_points(s)
+                        .into_iter()
+                        .map(|p| label(p.into()));
                     let pts: Vec<String> = pts.collect();
                     d.cubics.push(CubicData {
                         name: n,
-                        points: [pts[0].clone(), pts[1].clone(), pts[2].clone(), pts[3].clone()],
+                        points: [
+                            pts[0].clone(),
+                            pts[1].clone(),
+                            pts[2].clone(),
+                            pts[3].clone(),
+                        ],
                         construction,
                     });
                 }
@@ -68,7 +83,11 @@ impl SketchFile {
             let spec = spec
                 .try_map::<String, ()>(|_, s| Ok(label(*s)))
                 .expect("labels never fail");
-            d.constraints.push(ConstraintData { name: None, spec, reference });
+            d.constraints.push(ConstraintData {
+                name: None,
+                spec,
+                reference,
+            });
         }
         SketchFile { sketch: d }
     }
