@@ -379,3 +379,27 @@ fn set_value_is_a_value_edit() {
     assert!(s.solve().unwrap().outcome.is_ok());
     assert!((m(&s, id).value.unwrap() - 7.0).abs() < TOL);
 }
+
+#[test]
+fn a_cubic_tangent_to_a_line_at_its_start() {
+    let mut s = Sketch::new();
+    let p =
+        [[0.0, 0.0], [1.0, 1.2], [3.0, 1.0], [4.0, 0.0]].map(|q| s.add_point(q[0], q[1]).unwrap());
+    let cubic = s.add_cubic(p).unwrap();
+    let q = s.add_point(-3.0, 0.4).unwrap();
+    let l = s.add_line(q, p[0]).unwrap();
+    s.horizontal(l).unwrap();
+    let t = s.tangent(cubic, End::Start, l, End::End).unwrap();
+    holds_from_start_and_perturbed(&mut s, t, None);
+    // The first control leg lies along the line.
+    let c = s.cubic(cubic);
+    assert!((c[1][1] - c[0][1]).abs() < 1e-7);
+    let round = s.add_circle(q, 1.0).unwrap();
+    let err = s.add(Spec::Tangent {
+        a: cubic.into(),
+        b: round.into(),
+        a_end: End::Start,
+        b_end: End::Start,
+    });
+    assert!(err.is_err());
+}

@@ -87,10 +87,11 @@ impl Sketch {
                 continue;
             }
             match &s.geometry {
-                Geometry::Line { points } => {
-                    if !(fixed.contains(&points[0]) && fixed.contains(&points[1])) {
-                        out.push(Soft::LineLength(LineId(*h)));
-                    }
+                // A line between two fixed points has its length decided.
+                Geometry::Line { points }
+                    if !(fixed.contains(&points[0]) && fixed.contains(&points[1])) =>
+                {
+                    out.push(Soft::LineLength(LineId(*h)));
                 }
                 Geometry::Arc {
                     center, start, end, ..
