@@ -16,7 +16,7 @@ use std::collections::{BTreeMap, BTreeSet};
 const SHORTEST_PIECE: f64 = 1.0 / 64.0;
 
 /// The relative step size of the dragged parameters (see [`crate::Config::dragged_scale`]).
-const DRAGGED_SCALE: f64 = 1e-3;
+const DRAGGED_SCALE: f64 = 1e-4;
 
 /// What one drag step did.
 #[derive(Clone, Debug, PartialEq)]
@@ -249,12 +249,14 @@ impl Drag<'_> {
         }
         step.reached = done >= 1.0;
         // The grip's parameters weigh much more than the rest, but not infinitely: when the
-        // target is within reach the grip stops a hair short of it (a millionth of the step).
-        // One more solve from there closes the gap; a target out of reach stays far.
+        // target is within reach the grip stops a hair short of it (about 1e-8 of the step,
+        // the square of their relative weight). Only when it stops further short than that
+        // (a millionth of the step), one more solve from there closes the gap; a target out
+        // of reach stays far and costs nothing more.
         let span = (target[0] - start[0]).hypot(target[1] - start[1]);
         let grip = self.grip();
         let miss = (grip[0] - target[0]).hypot(grip[1] - target[1]);
-        if step.reached && miss > 1e-12 * (1.0 + span) && miss < 1e-3 * span {
+        if step.reached && miss > 1e-6 * span && miss < 1e-3 * span {
             let (outcome, flipped) = self.attempt(target)?;
             if outcome.is_ok() && !flipped {
                 step.pieces += 1;
