@@ -9,6 +9,7 @@
 pub mod assembly;
 pub mod check;
 pub mod compare;
+pub mod drag;
 pub mod generate;
 pub mod peers;
 pub mod problem;

@@ -7,6 +7,7 @@
 //! loci-bench emit FAMILY VARIANT SIZE DIR
 //! loci-bench report DIR
 //! loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only]
+//! loci-bench drag [SIZES [STEPS]]     (sizes as 100,1000,10000; 600 steps)
 //! ```
 
 use anyhow::{bail, Context, Result};
@@ -44,6 +45,7 @@ fn real_main() -> Result<()> {
         Some("emit") => return emit(&args[1..]),
         Some("report") => return rerender(&args[1..]),
         Some("assembly") => return assembly(&args[1..]),
+        Some("drag") => return drag(&args[1..]),
         _ => {}
     }
     let mut quick = false;
@@ -340,5 +342,23 @@ fn assembly(args: &[String]) -> Result<()> {
         Some(&Path::new(env!("CARGO_MANIFEST_DIR"))),
     );
     print!("{}", loci_bench::assembly::table(&t));
+    Ok(())
+}
+
+/// `loci-bench drag [SIZES [STEPS]]`: the drag benchmark, printed as a markdown table.
+fn drag(args: &[String]) -> Result<()> {
+    let sizes: Vec<usize> = match args.first() {
+        Some(s) => s
+            .split(',')
+            .map(|n| n.parse().with_context(|| format!("bad size {n}")))
+            .collect::<Result<_>>()?,
+        None => vec![100, 1000, 10_000],
+    };
+    let steps: usize = match args.get(1) {
+        Some(s) => s.parse().context("steps is a number")?,
+        None => 600,
+    };
+    let figures = loci_bench::drag::drag_benchmark(&sizes, steps.max(2));
+    print!("{}", loci_bench::drag::drag_table(&figures));
     Ok(())
 }

@@ -19,7 +19,9 @@ mod assembly_svg;
 mod check;
 mod conformance;
 mod render;
+mod drag;
 mod report;
+mod sketch;
 mod slvs;
 
 use clap::{Parser, Subcommand};
@@ -116,6 +118,23 @@ enum Command {
         #[arg(long)]
         svg: Option<PathBuf>,
     },
+    /// Drag a shape of a sketch file toward a point in equal steps, printing each step.
+    Drag {
+        /// A sketch file.
+        file: PathBuf,
+        /// The name of the point (or other shape) to drag.
+        #[arg(long)]
+        point: String,
+        /// Where to: X,Y.
+        #[arg(long, value_parser = drag::parse_xy, allow_hyphen_values = true)]
+        to: [f64; 2],
+        /// How many steps.
+        #[arg(long, default_value_t = 10)]
+        steps: usize,
+        /// Write the dragged sketch here.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
     /// Check loci against SolveSpace's regression fixtures and print a Markdown report.
     Conformance {
         /// The folder of `.slvs` files (searched recursively).
@@ -144,6 +163,17 @@ fn main() -> ExitCode {
 
 fn run(cli: Cli) -> anyhow::Result<u8> {
     match cli.command {
+        Command::Solve {
+            file, json, output, ..
+        } if sketch::is_sketch(&file) => sketch::solve(&file, json, output.as_deref()),
+        Command::Check { file, json, .. } if sketch::is_sketch(&file) => sketch::check(&file, json),
+        Command::Drag {
+            file,
+            point,
+            to,
+            steps,
+            output,
+        } => drag::run(&file, &point, to, steps, output.as_deref()),
         Command::Solve {
             file,
             json,

@@ -57,6 +57,14 @@ pub enum ModelError {
         /// What it should hold.
         expected: &'static str,
     },
+    /// An object cannot be removed while another still refers to it.
+    #[error("{object} cannot be removed: {user} still refers to it")]
+    InUse {
+        /// The object asked to be removed.
+        object: ObjectId,
+        /// The first object found that refers to it.
+        user: ObjectId,
+    },
     /// A NaN or infinite number.
     #[error("{owner}: {field} is {value}, not a finite number")]
     NonFinite {

@@ -40,6 +40,7 @@ pub mod format;
 pub mod geom;
 mod model;
 mod par;
+pub mod sketch;
 mod solve;
 
 pub use diagnose::{

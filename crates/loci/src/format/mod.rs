@@ -2,4 +2,5 @@
 
 pub mod assembly;
 pub mod json;
+pub mod sketch;
 pub mod slvs;

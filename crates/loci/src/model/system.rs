@@ -186,6 +186,68 @@ impl System {
         Some(c)
     }
 
+    /// Removes an entity that nothing refers to any more; returns it, or `None` when there is
+    /// no such entity. A structural edit. Its parameters stay (remove them with
+    /// [`System::remove_param`]).
+    ///
+    /// # Errors
+    /// [`ModelError::InUse`] naming the first entity (as workplane or reference) or constraint
+    /// that still refers to it; nothing is removed then.
+    pub fn remove_entity(&mut self, h: EntityId) -> Result<Option<Entity>, ModelError> {
+        let Some(i) = self.entity_ix.get(h.0) else {
+            return Ok(None);
+        };
+        let in_use = |user| ModelError::InUse {
+            object: ObjectId::Entity(h),
+            user,
+        };
+        if let Some(e) = self.entities.iter().find(|e| {
+            e.h != h && (e.workplane == Some(h) || e.kind.references().iter().any(|&(_, r)| r == h))
+        }) {
+            return Err(in_use(ObjectId::Entity(e.h)));
+        }
+        if let Some(c) = self
+            .constraints
+            .iter()
+            .find(|c| c.workplane == Some(h) || c.fields().contains(&Some(h)))
+        {
+            return Err(in_use(ObjectId::Constraint(c.h)));
+        }
+        self.entity_ix.remove(h.0);
+        let e = self.entities.remove(i);
+        self.entity_ix
+            .update_positions(|v| if v > i { v - 1 } else { v });
+        self.touch();
+        Ok(Some(e))
+    }
+
+    /// Removes a parameter that no entity holds or reads any more; returns it, or `None` when
+    /// there is no such parameter. A structural edit.
+    ///
+    /// # Errors
+    /// [`ModelError::InUse`] naming the first entity that still holds or reads it.
+    pub fn remove_param(&mut self, h: ParamId) -> Result<Option<Param>, ModelError> {
+        let Some(i) = self.param_ix.get(h.0) else {
+            return Ok(None);
+        };
+        if let Some(e) = self
+            .entities
+            .iter()
+            .find(|e| e.kind.params().contains(&h) || e.kind.read_params().contains(&h))
+        {
+            return Err(ModelError::InUse {
+                object: ObjectId::Param(h),
+                user: ObjectId::Entity(e.h),
+            });
+        }
+        self.param_ix.remove(h.0);
+        let p = self.params.remove(i);
+        self.param_ix
+            .update_positions(|v| if v > i { v - 1 } else { v });
+        self.touch();
+        Ok(Some(p))
+    }
+
     /// All parameters, in the order added.
     #[must_use]
     pub fn params(&self) -> &[Param] {

@@ -1,0 +1,344 @@
+//! Dragging: a shape follows the cursor as closely as the constraints allow while the rest
+//! moves as little as possible, with soft constraints on, and never flips.
+//!
+//! A [`Drag`] writes the soft constraints once and keeps one [`Solver`]: consecutive steps
+//! change values only, so they reuse the compiled equations, ordering and factorisation,
+//! and components the drag does not touch are not solved. After each step the orientation
+//! of every triangle of lines and the direction of every arc is compared with before; a step
+//! that would turn one over (or that fails) is undone and taken in shorter pieces.
+
+use super::soft::SoftRec;
+use super::{ArcId, PointId, ShapeId, ShapeKind, Sketch, SketchError, Spec};
+use crate::solve::{Outcome, Solver};
+use std::collections::{BTreeMap, BTreeSet};
+
+/// The shortest piece of a step tried, as a fraction of it, before giving up.
+const SHORTEST_PIECE: f64 = 1.0 / 64.0;
+
+/// The relative step size of the dragged parameters (see [`crate::Config::dragged_scale`]).
+const DRAGGED_SCALE: f64 = 1e-4;
+
+/// What one drag step did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DragStep {
+    /// The outcome of the last solve (of the last piece tried).
+    pub outcome: Outcome,
+    /// Whether the whole step was taken; false when a piece of it could not be taken without a
+    /// failure or a flip, however short (the sketch stays where the last good piece left it).
+    pub reached: bool,
+    /// Pieces solved and kept.
+    pub pieces: usize,
+    /// Pieces undone because they failed or would have flipped something.
+    pub refused: usize,
+    /// Pieces undone because they would have flipped a triangle or an arc.
+    pub flips_prevented: usize,
+    /// Where the dragged shape's grip ended.
+    pub at: [f64; 2],
+    /// How far that is from the target.
+    pub miss: f64,
+}
+
+/// A drag in progress; ends (taking its soft constraints out) when dropped.
+pub struct Drag<'a> {
+    sketch: &'a mut Sketch,
+    points: Vec<PointId>,
+    soft: Vec<SoftRec>,
+    solver: Solver,
+    /// Positions of the coordinates of the grip's points, x then y.
+    grip_ix: Vec<[usize; 2]>,
+    /// Positions of the coordinates of each triangle's corners.
+    triangles: Vec<[[usize; 2]; 3]>,
+    /// Positions of the coordinates of each arc's centre, start and end.
+    arcs: Vec<[[usize; 2]; 3]>,
+    /// Fixed points' coordinates: parameters, positions and values.
+    fixed: Vec<(crate::ParamId, usize, f64)>,
+    /// The system revision the solver compiled, once it has.
+    compiled: Option<u64>,
+}
+
+impl Sketch {
+    /// Starts dragging a shape: a point, or a whole line, circle, arc or cubic (its grip is its
+    /// midpoint, centre or the mean of its control points).
+    ///
+    /// # Errors
+    /// No such shape, or one with a fixed point.
+    pub fn begin_drag(&mut self, shape: impl Into<ShapeId>) -> Result<Drag<'_>, SketchError> {
+        let shape = shape.into();
+        self.kind(shape).ok_or(SketchError::NoShape(shape))?;
+        let points = self.defining_points(shape);
+        let fixed = self.fixed_points();
+        if points.iter().any(|p| fixed.contains(p)) {
+            return Err(SketchError::Fixed(shape));
+        }
+        let params: Vec<_> = points.iter().flat_map(|p| self.point_params(*p)).collect();
+        // The grip should reach the cursor wherever the constraints allow: its parameters
+        // weigh far more than the rest.
+        let scale = self.cfg.dragged_scale.min(DRAGGED_SCALE);
+        let cfg = self
+            .cfg
+            .clone()
+            .with_find_failed(false)
+            .with_dragged_scale(scale);
+        self.restore_fixed();
+        let ix = |p: PointId| self.point_indexes(p);
+        let triangles = self.triangles().into_iter().map(|t| t.map(ix)).collect();
+        let arcs = self
+            .shapes()
+            .filter(|(_, k)| *k == ShapeKind::Arc)
+            .map(|(s, _)| self.arc_points(ArcId(s.0)).map(ix))
+            .collect();
+        let grip_ix = match self.kind(shape) {
+            Some(ShapeKind::Circle | ShapeKind::Arc) => vec![ix(points[0])],
+            _ => points.iter().map(|p| ix(*p)).collect(),
+        };
+        let fixed = self
+            .fixed_points()
+            .into_iter()
+            .flat_map(|p| {
+                let ([i, j], [pi, pj]) = (ix(p), self.point_params(p));
+                let v = self.sys.params();
+                [(pi, i, v[i].val), (pj, j, v[j].val)]
+            })
+            .collect();
+        let soft = self.add_soft()?;
+        Ok(Drag {
+            sketch: self,
+            points,
+            soft,
+            solver: Solver::new(Self::SHAPE_GROUP, &params, cfg),
+            grip_ix,
+            triangles,
+            arcs,
+            fixed,
+            compiled: None,
+        })
+    }
+
+    /// Drags a shape's grip toward `target` in one step (see [`Sketch::begin_drag`]).
+    ///
+    /// # Errors
+    /// As [`Sketch::begin_drag`] and [`Drag::step`].
+    pub fn drag(
+        &mut self,
+        shape: impl Into<ShapeId>,
+        target: [f64; 2],
+    ) -> Result<DragStep, SketchError> {
+        self.begin_drag(shape)?.step(target)
+    }
+
+    /// Triangles of lines: three points (up to coincidence) joined pairwise by lines.
+    fn triangles(&self) -> Vec<[PointId; 3]> {
+        // Classes of coincident points.
+        let mut parent: BTreeMap<PointId, PointId> = BTreeMap::new();
+        fn find(parent: &mut BTreeMap<PointId, PointId>, p: PointId) -> PointId {
+            let mut r = p;
+            while let Some(&q) = parent.get(&r) {
+                if q == r {
+                    break;
+                }
+                r = q;
+            }
+            parent.insert(p, r);
+            r
+        }
+        for (_, spec) in self.constraints() {
+            if let Spec::Coincident { a, b } = spec {
+                let (ra, rb) = (
+                    find(&mut parent, PointId(a.0)),
+                    find(&mut parent, PointId(b.0)),
+                );
+                if ra != rb {
+                    parent.insert(ra.max(rb), ra.min(rb));
+                }
+            }
+        }
+        let mut adj: BTreeMap<PointId, BTreeSet<PointId>> = BTreeMap::new();
+        for (s, k) in self.shapes() {
+            if k == ShapeKind::Line {
+                let [a, b] = self.line_points(super::LineId(s.0));
+                let (a, b) = (find(&mut parent, a), find(&mut parent, b));
+                if a != b {
+                    adj.entry(a).or_default().insert(b);
+                    adj.entry(b).or_default().insert(a);
+                }
+            }
+        }
+        let mut out = Vec::new();
+        for (u, nu) in &adj {
+            for v in nu.range(*u..).filter(|v| *v != u) {
+                for w in adj[v].range(*v..).filter(|w| *w != v) {
+                    if nu.contains(w) {
+                        out.push([*u, *v, *w]);
+                    }
+                }
+            }
+        }
+        out
+    }
+}
+
+fn area(p: [[f64; 2]; 3]) -> f64 {
+    (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])
+}
+
+impl Drag<'_> {
+    /// The grip of the dragged shape, where it is now.
+    #[must_use]
+    pub fn grip(&self) -> [f64; 2] {
+        let v = self.sketch.sys.params();
+        let n = self.grip_ix.len() as f64;
+        let sum = self
+            .grip_ix
+            .iter()
+            .fold([0.0, 0.0], |a, [i, j]| [a[0] + v[*i].val, a[1] + v[*j].val]);
+        [sum[0] / n, sum[1] / n]
+    }
+
+    /// The sketch being dragged, to read coordinates between steps.
+    #[must_use]
+    pub fn sketch(&self) -> &Sketch {
+        self.sketch
+    }
+
+    /// Moves the grip toward `target`: the whole way in one solve when that flips nothing,
+    /// else in shorter pieces.
+    ///
+    /// # Errors
+    /// A target that is not finite, or a solver that cannot start.
+    pub fn step(&mut self, target: [f64; 2]) -> Result<DragStep, SketchError> {
+        for v in target {
+            if !v.is_finite() {
+                return Err(SketchError::BadValue {
+                    what: "drag target",
+                    value: v,
+                    expected: "a finite number",
+                });
+            }
+        }
+        let start = self.grip();
+        let (mut done, mut piece) = (0.0f64, 1.0f64);
+        let mut step = DragStep {
+            outcome: Outcome::Okay,
+            reached: false,
+            pieces: 0,
+            refused: 0,
+            flips_prevented: 0,
+            at: start,
+            miss: 0.0,
+        };
+        while done < 1.0 {
+            let next = (done + piece).min(1.0);
+            let goal = [
+                start[0] + next * (target[0] - start[0]),
+                start[1] + next * (target[1] - start[1]),
+            ];
+            let (outcome, flipped) = self.attempt(goal)?;
+            step.outcome = outcome;
+            if outcome.is_ok() && !flipped {
+                done = next;
+                step.pieces += 1;
+                piece = (piece * 2.0).min(1.0);
+            } else {
+                step.refused += 1;
+                step.flips_prevented += usize::from(flipped);
+                piece /= 2.0;
+                if piece < SHORTEST_PIECE {
+                    break;
+                }
+            }
+        }
+        step.reached = done >= 1.0;
+        // The grip's parameters weigh much more than the rest, but not infinitely: when the
+        // target is within reach the grip stops a hair short of it (about 1e-8 of the step,
+        // the square of their relative weight). Only when it stops further short than that
+        // (a millionth of the step), one more solve from there closes the gap; a target out
+        // of reach stays far and costs nothing more.
+        let span = (target[0] - start[0]).hypot(target[1] - start[1]);
+        let grip = self.grip();
+        let miss = (grip[0] - target[0]).hypot(grip[1] - target[1]);
+        if step.reached && miss > 1e-6 * span && miss < 1e-3 * span {
+            let (outcome, flipped) = self.attempt(target)?;
+            if outcome.is_ok() && !flipped {
+                step.pieces += 1;
+            }
+        }
+        step.at = self.grip();
+        step.miss = (step.at[0] - target[0]).hypot(step.at[1] - target[1]);
+        Ok(step)
+    }
+
+    /// One solve with the grip put at `goal`; undone when it fails or flips something.
+    fn attempt(&mut self, goal: [f64; 2]) -> Result<(Outcome, bool), SketchError> {
+        let snapshot: Vec<f64> = self.sketch.sys.params().iter().map(|p| p.val).collect();
+        let soft_values = self.sketch.soft_values(&self.soft);
+        let before = self.orientation();
+        let grip = self.grip();
+        let d = [goal[0] - grip[0], goal[1] - grip[1]];
+        for p in &self.points {
+            let [x, y] = self.sketch.point(*p);
+            self.sketch.move_point(*p, [x + d[0], y + d[1]])?;
+        }
+        let compiling = self.compiled != Some(self.sketch.sys.revision());
+        if compiling {
+            self.sketch.prepare_user();
+        }
+        for &(p, i, want) in &self.fixed {
+            if self.sketch.sys.params()[i].val.to_bits() != want.to_bits() {
+                self.sketch.sys.set_value(p, want);
+            }
+        }
+        self.sketch
+            .write_soft(&mut self.soft, &soft_values, compiling);
+        let report = self.solver.solve(&mut self.sketch.sys)?;
+        self.compiled = Some(self.sketch.sys.revision());
+        let flipped = report.outcome.is_ok() && self.flipped(&before);
+        if !report.outcome.is_ok() || flipped {
+            for (v, s) in self.sketch.sys.values_mut().zip(&snapshot) {
+                *v = *s;
+            }
+        }
+        Ok((report.outcome, flipped))
+    }
+
+    /// Signed areas of the triangles and sweeps of the arcs.
+    fn orientation(&self) -> (Vec<f64>, Vec<f64>) {
+        let v = self.sketch.sys.params();
+        let xy = |[i, j]: [usize; 2]| [v[i].val, v[j].val];
+        let tri = self.triangles.iter().map(|t| area(t.map(xy))).collect();
+        let arcs = self
+            .arcs
+            .iter()
+            .map(|a| {
+                let [c, s, e] = a.map(xy);
+                let start = (s[1] - c[1]).atan2(s[0] - c[0]);
+                let end = (e[1] - c[1]).atan2(e[0] - c[0]);
+                (end - start).to_degrees().rem_euclid(360.0)
+            })
+            .collect();
+        (tri, arcs)
+    }
+
+    /// Whether a triangle turned over or an arc's sweep jumped across a full turn.
+    fn flipped(&self, before: &(Vec<f64>, Vec<f64>)) -> bool {
+        let now = self.orientation();
+        let tri = before.0.iter().zip(&now.0).any(|(a, b)| {
+            let scale = a.abs().max(b.abs());
+            scale > 0.0 && a * b < 0.0 && a.abs() > 1e-9 * scale.max(1.0)
+        });
+        let arcs = before
+            .1
+            .iter()
+            .zip(&now.1)
+            .any(|(a, b)| (a - b).abs() > 180.0);
+        tri || arcs
+    }
+
+    /// Ends the drag, taking its soft constraints out (as dropping it does).
+    pub fn end(self) {}
+}
+
+impl Drop for Drag<'_> {
+    fn drop(&mut self) {
+        self.sketch.remove_soft(&self.soft);
+    }
+}

@@ -1,0 +1,414 @@
+//! Soft constraints: while solving, every line keeps its length and every arc its radius and
+//! its start and end angles, except where user constraints already decide them. When the
+//! sketch cannot hold them all, only those that a verified conflict shows in the way are
+//! dropped; all are dropped only when that is not enough. They never outlive the solve.
+
+use super::measure::wrap_deg;
+use super::shapes::Geometry;
+use super::{
+    ArcId, LineId, PointId, ShapeId, Sketch, SketchConstraintId, SketchError, Spec, X_AXIS,
+};
+use crate::diagnose::Member;
+use crate::model::{Constraint, ConstraintId, ConstraintKind as K, EntityId};
+use crate::solve::{Outcome, Report};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeSet;
+
+/// A soft constraint: what it keeps, of which shape.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(tag = "keeps", content = "shape", rename_all = "snake_case")]
+pub enum Soft {
+    /// A line's length.
+    LineLength(LineId),
+    /// An arc's radius.
+    ArcRadius(ArcId),
+    /// The direction of an arc's start from its centre.
+    ArcStart(ArcId),
+    /// The direction of an arc's end from its centre.
+    ArcEnd(ArcId),
+}
+
+/// A soft constraint written into the system.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SoftRec {
+    pub soft: Soft,
+    pub core: ConstraintId,
+    /// Positions in the parameter vector of the coordinates it reads: a line's ends, or an
+    /// arc's centre and the end it keeps (the start for its radius), x then y.
+    pub ix: [usize; 4],
+    /// For an angle: the sign the solver kept when it compiled (see
+    /// [`Sketch::prepare_angle`]).
+    pub sign: f64,
+}
+
+/// The result of a sketch solve.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SketchReport {
+    /// How it ended. Redundancy among soft constraints alone is not reported.
+    pub outcome: Outcome,
+    /// The user constraints the core solver named (redundant, conflicting or unsatisfied),
+    /// in the order added.
+    pub failed: Vec<SketchConstraintId>,
+    /// Soft constraints that held.
+    pub kept: Vec<Soft>,
+    /// Soft constraints dropped because they stood in the way.
+    pub dropped: Vec<Soft>,
+    /// Newton iterations of the last solve.
+    pub iterations: usize,
+    /// Largest residual left.
+    pub residual: f64,
+}
+
+impl Sketch {
+    /// The soft constraints a solve adds now: one per line length, arc radius and arc end
+    /// angle that no user constraint decides already.
+    #[must_use]
+    pub fn soft_constraints(&self) -> Vec<Soft> {
+        let mut fixed: BTreeSet<PointId> = self.fixed_points().into_iter().collect();
+        let mut sized: BTreeSet<EntityId> = BTreeSet::new();
+        for (_, r) in self.constraints.iter().filter(|(_, r)| !r.reference) {
+            match &r.spec {
+                Spec::Length { line: s, .. }
+                | Spec::Radius { shape: s, .. }
+                | Spec::Diameter { shape: s, .. }
+                | Spec::Lock { shape: s }
+                | Spec::FixShape { shape: s } => {
+                    sized.insert(s.0);
+                }
+                Spec::Fix { point } => {
+                    fixed.insert(PointId(point.0));
+                }
+                _ => {}
+            }
+        }
+        let mut out = Vec::new();
+        for (h, s) in &self.shapes {
+            if sized.contains(h) && !matches!(s.geometry, Geometry::Arc { .. }) {
+                continue;
+            }
+            match &s.geometry {
+                // A line between two fixed points has its length decided.
+                Geometry::Line { points }
+                    if !(fixed.contains(&points[0]) && fixed.contains(&points[1])) =>
+                {
+                    out.push(Soft::LineLength(LineId(*h)));
+                }
+                Geometry::Arc {
+                    center, start, end, ..
+                } => {
+                    let locked = self.constraints.values().any(|r| {
+                        !r.reference
+                            && matches!(r.spec, Spec::Lock { shape } | Spec::FixShape { shape } if shape.0 == *h)
+                    });
+                    if locked {
+                        continue;
+                    }
+                    let a = ArcId(*h);
+                    if !sized.contains(h) {
+                        out.push(Soft::ArcRadius(a));
+                    }
+                    let c = fixed.contains(center);
+                    if !(c && fixed.contains(start)) {
+                        out.push(Soft::ArcStart(a));
+                    }
+                    if !(c && fixed.contains(end)) {
+                        out.push(Soft::ArcEnd(a));
+                    }
+                }
+                _ => {}
+            }
+        }
+        out
+    }
+
+    /// What a soft constraint keeps, as drawn now (a length, a radius, or an angle in
+    /// degrees).
+    fn soft_value(&self, s: Soft) -> f64 {
+        match s {
+            Soft::LineLength(l) => {
+                let [p, q] = self.line(l);
+                (q[0] - p[0]).hypot(q[1] - p[1])
+            }
+            Soft::ArcRadius(a) => self.arc(a).radius,
+            Soft::ArcStart(a) => self.arc(a).start_angle,
+            Soft::ArcEnd(a) => self.arc(a).end_angle,
+        }
+    }
+
+    /// Writes the soft constraints into the system at their current values. On an error,
+    /// those already written are taken out again.
+    pub(crate) fn add_soft(&mut self) -> Result<Vec<SoftRec>, SketchError> {
+        let mut out = Vec::new();
+        for s in self.soft_constraints() {
+            let h = self.core_handle();
+            let v = self.soft_value(s);
+            let c = Constraint::new(h, Self::SHAPE_GROUP.0, K::PtPtDistance)
+                .in_workplane(Some(super::WORKPLANE.0));
+            let c = match s {
+                Soft::LineLength(l) => {
+                    let [a, b] = self.line_points(l);
+                    Constraint {
+                        kind: K::PtPtDistance,
+                        pt_a: Some(a.0),
+                        pt_b: Some(b.0),
+                        val: v,
+                        ..c
+                    }
+                }
+                Soft::ArcRadius(a) => Constraint {
+                    kind: K::Diameter,
+                    entity_a: Some(a.0),
+                    val: 2.0 * v,
+                    ..c
+                },
+                Soft::ArcStart(a) | Soft::ArcEnd(a) => {
+                    let Geometry::Arc { spokes, .. } = &self.shapes[&a.0].geometry else {
+                        unreachable!("an arc")
+                    };
+                    let spoke = spokes[usize::from(matches!(s, Soft::ArcEnd(_)))];
+                    Constraint {
+                        kind: K::Angle,
+                        entity_a: Some(X_AXIS),
+                        entity_b: Some(spoke),
+                        val: v,
+                        ..c
+                    }
+                }
+            };
+            match self.sys.add_constraint(c) {
+                Ok(core) => {
+                    let pts = match s {
+                        Soft::LineLength(l) => self.line_points(l),
+                        Soft::ArcRadius(a) | Soft::ArcStart(a) => {
+                            let [c, st, _] = self.arc_points(a);
+                            [c, st]
+                        }
+                        Soft::ArcEnd(a) => {
+                            let [c, _, en] = self.arc_points(a);
+                            [c, en]
+                        }
+                    };
+                    let [a, b] = pts.map(|p| self.point_indexes(p));
+                    out.push(SoftRec {
+                        soft: s,
+                        core,
+                        ix: [a[0], a[1], b[0], b[1]],
+                        sign: 1.0,
+                    });
+                }
+                Err(e) => {
+                    self.remove_soft(&out);
+                    return Err(e.into());
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// Takes soft constraints out of the system (those already out are skipped).
+    pub(crate) fn remove_soft(&mut self, recs: &[SoftRec]) {
+        for r in recs {
+            self.sys.remove_constraint(r.core);
+        }
+    }
+
+    /// The values the soft constraints keep in the next solve: the shapes as drawn now.
+    pub(crate) fn soft_values(&self, recs: &[SoftRec]) -> Vec<f64> {
+        let v = self.sys.params();
+        recs.iter()
+            .map(|r| {
+                let [ax, ay, bx, by] = r.ix.map(|i| v[i].val);
+                let (dx, dy) = (bx - ax, by - ay);
+                match r.soft {
+                    Soft::LineLength(_) | Soft::ArcRadius(_) => dx.hypot(dy),
+                    Soft::ArcStart(_) | Soft::ArcEnd(_) => dy.atan2(dx).to_degrees(),
+                }
+            })
+            .collect()
+    }
+
+    /// Writes soft values (value edits). `compiling`: the solver compiles next, from the
+    /// configuration as it is now, so angle signs are taken from it.
+    pub(crate) fn write_soft(&mut self, recs: &mut [SoftRec], values: &[f64], compiling: bool) {
+        for (r, &v) in recs.iter_mut().zip(values) {
+            let val = match r.soft {
+                Soft::LineLength(_) => v,
+                Soft::ArcRadius(_) => 2.0 * v,
+                Soft::ArcStart(a) | Soft::ArcEnd(a) => {
+                    if compiling {
+                        let g = self.arc(a);
+                        let p = if matches!(r.soft, Soft::ArcStart(_)) {
+                            g.start
+                        } else {
+                            g.end
+                        };
+                        // The core's spoke runs centre minus point; the axis is (-1, 0).
+                        let cross = -(g.center[1] - p[1]);
+                        r.sign = if cross < 0.0 { -1.0 } else { 1.0 };
+                    }
+                    r.sign * wrap_deg(v)
+                }
+            };
+            // Most soft constraints of a drag keep their value from step to step: only
+            // those that changed are written.
+            if self
+                .sys
+                .constraint(r.core)
+                .is_some_and(|c| c.val.to_bits() != val.to_bits())
+            {
+                if let Some(mut c) = self.sys.constraint_mut(r.core) {
+                    c.val = val;
+                }
+            }
+        }
+    }
+
+    /// Solves the sketch with its soft constraints (see the module's notes). Parameter values
+    /// change only when every user constraint holds.
+    ///
+    /// # Errors
+    /// The solver could not start (a bad setting in [`Sketch::set_config`]). No soft
+    /// constraint is left in the system then either.
+    pub fn solve(&mut self) -> Result<SketchReport, SketchError> {
+        if self.shapes.is_empty() {
+            return Ok(SketchReport {
+                outcome: Outcome::Okay,
+                failed: Vec::new(),
+                kept: Vec::new(),
+                dropped: Vec::new(),
+                iterations: 0,
+                residual: 0.0,
+            });
+        }
+        let mut soft = self.add_soft()?;
+        let out = self.solve_with(&mut soft);
+        self.remove_soft(&soft);
+        out
+    }
+
+    fn solve_once(&mut self, soft: &mut [SoftRec]) -> Result<Report, SketchError> {
+        let values = self.soft_values(soft);
+        self.prepare_user();
+        self.write_soft(soft, &values, true);
+        Ok(crate::solve(
+            &mut self.sys,
+            Self::SHAPE_GROUP,
+            &[],
+            &self.cfg,
+        )?)
+    }
+
+    fn solve_with(&mut self, soft: &mut [SoftRec]) -> Result<SketchReport, SketchError> {
+        let mut active: Vec<usize> = (0..soft.len()).collect();
+        let mut dropped: Vec<Soft> = Vec::new();
+        for _ in 0..8 {
+            let r = self.solve_once(soft)?;
+            if r.outcome.is_ok() || active.is_empty() {
+                return Ok(self.report(&r, soft, &active, dropped));
+            }
+            let chosen = self.in_the_way(soft, &active)?;
+            if chosen.is_empty() {
+                break;
+            }
+            for i in &chosen {
+                self.sys.remove_constraint(soft[*i].core);
+                dropped.push(soft[*i].soft);
+            }
+            active.retain(|i| !chosen.contains(i));
+        }
+        // The soft constraints in the way could not be told apart: without any of them.
+        for i in active.drain(..) {
+            self.sys.remove_constraint(soft[i].core);
+            dropped.push(soft[i].soft);
+        }
+        let r = self.solve_once(&mut [])?;
+        Ok(self.report(&r, soft, &active, dropped))
+    }
+
+    /// One active soft constraint from each conflict set that has any: those checked by
+    /// solving them alone first, the others only when no checked set has one.
+    fn in_the_way(&self, soft: &[SoftRec], active: &[usize]) -> Result<Vec<usize>, SketchError> {
+        let d = crate::diagnose(&self.sys, Self::SHAPE_GROUP, &self.cfg)?;
+        for verified in [true, false] {
+            let mut chosen: Vec<usize> = Vec::new();
+            for set in d.conflicting.iter().filter(|s| s.verified == verified) {
+                let mine: Vec<usize> = active
+                    .iter()
+                    .copied()
+                    .filter(|&i| set.members.contains(&Member::Constraint(soft[i].core)))
+                    .collect();
+                if mine.is_empty() || mine.iter().any(|i| chosen.contains(i)) {
+                    continue;
+                }
+                // Prefer a shape that no user constraint of the set names: the user spoke of
+                // the others.
+                let named: BTreeSet<EntityId> = set
+                    .members
+                    .iter()
+                    .filter_map(|m| match m {
+                        Member::Constraint(c) => self.owner.get(c),
+                        Member::Entity(_) => None,
+                    })
+                    .filter_map(|id| self.constraints.get(id))
+                    .flat_map(|r| {
+                        r.spec
+                            .shapes()
+                            .into_iter()
+                            .map(|(_, s)| s.0)
+                            .collect::<Vec<_>>()
+                    })
+                    .collect();
+                let pick = mine
+                    .iter()
+                    .copied()
+                    .rev()
+                    .find(|&i| !named.contains(&soft_shape(soft[i].soft)))
+                    .unwrap_or(mine[mine.len() - 1]);
+                chosen.push(pick);
+            }
+            if !chosen.is_empty() {
+                return Ok(chosen);
+            }
+        }
+        Ok(Vec::new())
+    }
+
+    fn report(
+        &self,
+        r: &Report,
+        soft: &[SoftRec],
+        active: &[usize],
+        dropped: Vec<Soft>,
+    ) -> SketchReport {
+        let failed: BTreeSet<SketchConstraintId> = r
+            .failed
+            .iter()
+            .filter_map(|c| self.owner.get(c).copied())
+            .collect();
+        let outcome = match r.outcome {
+            Outcome::RedundantOkay if failed.is_empty() => Outcome::Okay,
+            o => o,
+        };
+        SketchReport {
+            outcome,
+            failed: failed.into_iter().collect(),
+            kept: active.iter().map(|&i| soft[i].soft).collect(),
+            dropped,
+            iterations: r.iterations,
+            residual: r.residual,
+        }
+    }
+}
+
+fn soft_shape(s: Soft) -> EntityId {
+    match s {
+        Soft::LineLength(l) => l.0,
+        Soft::ArcRadius(a) | Soft::ArcStart(a) | Soft::ArcEnd(a) => a.0,
+    }
+}
+
+impl From<Soft> for ShapeId {
+    fn from(s: Soft) -> ShapeId {
+        ShapeId(soft_shape(s))
+    }
+}

@@ -1,0 +1,162 @@
+//! Soft constraints: kept while the sketch can hold them; when one user constraint
+//! contradicts one shape, only that shape's soft constraint is dropped (the others kept, by
+//! value); all are dropped only when needed; none is ever left in the system.
+
+use loci::sketch::{LineId, Sketch, Soft};
+use loci::{Config, Outcome};
+
+const TOL: f64 = 1e-8;
+
+fn len(s: &Sketch, l: LineId) -> f64 {
+    let [p, q] = s.line(l);
+    (q[0] - p[0]).hypot(q[1] - p[1])
+}
+
+/// Three lines joined end to end, and a separate arc.
+fn polyline_and_arc() -> (Sketch, [LineId; 3], loci::sketch::ArcId) {
+    let mut s = Sketch::new();
+    let pts =
+        [[0.0, 0.0], [3.0, 1.0], [5.0, 3.0], [6.0, 7.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let lines = [0, 1, 2].map(|i| s.add_line(pts[i], pts[i + 1]).unwrap());
+    let [c, a, b] =
+        [[10.0, 0.0], [12.0, 0.0], [10.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let arc = s.add_arc(c, a, b).unwrap();
+    (s, lines, arc)
+}
+
+fn core_count(s: &Sketch) -> usize {
+    s.constraints()
+        .map(|(i, _)| s.core_constraints(i).len())
+        .sum()
+}
+
+#[test]
+fn soft_constraints_are_kept_while_solvable() {
+    let (mut s, lines, arc) = polyline_and_arc();
+    let before: Vec<f64> = lines.iter().map(|l| len(&s, *l)).collect();
+    let g0 = s.arc(arc);
+    // Turning the middle line horizontal: the lines keep their lengths.
+    s.horizontal(lines[1]).unwrap();
+    // Joining the arc's start to the polyline's end: the arc moves whole, keeping its shape.
+    let [_, st, _] = s.arc_points(arc);
+    let [_, last] = s.line_points(lines[2]);
+    s.coincident(st, last).unwrap();
+    let r = s.solve().unwrap();
+    assert_eq!(r.outcome, Outcome::Okay, "{r:?}");
+    assert!(r.dropped.is_empty());
+    assert_eq!(
+        r.kept,
+        vec![
+            Soft::LineLength(lines[0]),
+            Soft::LineLength(lines[1]),
+            Soft::LineLength(lines[2]),
+            Soft::ArcRadius(arc),
+            Soft::ArcStart(arc),
+            Soft::ArcEnd(arc),
+        ]
+    );
+    for (l, b) in lines.iter().zip(&before) {
+        assert!((len(&s, *l) - b).abs() < TOL);
+    }
+    let [p, q] = s.line(lines[1]);
+    assert!((p[1] - q[1]).abs() < TOL);
+    // The arc kept radius and angles.
+    let g = s.arc(arc);
+    assert!((g.radius - g0.radius).abs() < TOL, "{g:?} {g0:?}");
+    assert!(
+        (g.start_angle - g0.start_angle).abs() < 1e-7 && (g.end_angle - g0.end_angle).abs() < 1e-7
+    );
+    assert_eq!(s.system().constraints().len(), core_count(&s));
+}
+
+#[test]
+fn a_user_dimension_on_a_line_leaves_no_soft_constraint_on_it() {
+    let (mut s, lines, _) = polyline_and_arc();
+    s.length(lines[0], 4.0).unwrap();
+    assert!(!s.soft_constraints().contains(&Soft::LineLength(lines[0])));
+    assert!(s.soft_constraints().contains(&Soft::LineLength(lines[1])));
+}
+
+#[test]
+fn only_the_soft_constraint_in_the_way_is_dropped() {
+    let (mut s, lines, arc) = polyline_and_arc();
+    let before: Vec<f64> = lines.iter().map(|l| len(&s, *l)).collect();
+    let g0 = s.arc(arc);
+    // A distance between the first line's ends (not a length of the line itself, which
+    // would skip its soft constraint): it contradicts that line's soft length alone.
+    let [a, b] = s.line_points(lines[0]);
+    let d = s.distance(a, b, 5.0).unwrap();
+    let r = s.solve().unwrap();
+    assert_eq!(r.outcome, Outcome::Okay, "{r:?}");
+    assert_eq!(r.dropped, vec![Soft::LineLength(lines[0])]);
+    assert_eq!(r.kept.len(), 5);
+    assert!((s.measure(d).unwrap().value.unwrap() - 5.0).abs() < TOL);
+    // The others kept their values.
+    for i in 1..3 {
+        assert!((len(&s, lines[i]) - before[i]).abs() < TOL, "line {i}");
+    }
+    let g = s.arc(arc);
+    assert!((g.radius - g0.radius).abs() < TOL);
+    assert!((g.start_angle - g0.start_angle).abs() < 1e-7 && (g.sweep - g0.sweep).abs() < 1e-7);
+    assert_eq!(s.system().constraints().len(), core_count(&s));
+}
+
+#[test]
+fn a_radius_against_an_arc_keeps_its_angles() {
+    let (mut s, _, arc) = polyline_and_arc();
+    let g0 = s.arc(arc);
+    let [c, st, _] = s.arc_points(arc);
+    // A distance from the centre to the start is the radius, said another way.
+    s.distance(c, st, 3.0).unwrap();
+    let r = s.solve().unwrap();
+    assert!(r.outcome.is_ok(), "{r:?}");
+    assert_eq!(r.dropped, vec![Soft::ArcRadius(arc)]);
+    let g = s.arc(arc);
+    assert!((g.radius - 3.0).abs() < TOL);
+    assert!(
+        (g.start_angle - g0.start_angle).abs() < 1e-7 && (g.end_angle - g0.end_angle).abs() < 1e-7
+    );
+}
+
+#[test]
+fn all_are_dropped_only_when_the_user_constraints_themselves_conflict() {
+    let (mut s, lines, _) = polyline_and_arc();
+    let [a, b] = s.line_points(lines[0]);
+    s.length(lines[0], 4.0).unwrap();
+    let bad = s.distance(a, b, 6.0).unwrap();
+    let n = s.system().constraints().len();
+    let r = s.solve().unwrap();
+    assert_eq!(r.outcome, Outcome::Inconsistent, "{r:?}");
+    assert!(r.failed.contains(&bad));
+    assert!(r.kept.is_empty());
+    assert_eq!(r.dropped.len(), 5, "every soft constraint was tried away");
+    assert_eq!(s.system().constraints().len(), n, "none left behind");
+}
+
+#[test]
+fn no_soft_constraint_is_left_behind_after_an_error() {
+    let (mut s, lines, _) = polyline_and_arc();
+    let n = s.system().constraints().len();
+    let params = s.system().params().len();
+    s.set_config(Config::default().with_tolerance(0.0));
+    assert!(s.solve().is_err());
+    assert_eq!(s.system().constraints().len(), n);
+    let [p, _] = s.line_points(lines[0]);
+    {
+        let mut d = s.begin_drag(p).unwrap();
+        assert!(
+            d.sketch().system().constraints().len() > n,
+            "soft constraints while dragging"
+        );
+        assert!(d.step([1.0, 1.0]).is_err());
+    }
+    assert_eq!(
+        s.system().constraints().len(),
+        n,
+        "a drag's soft constraints go when it ends"
+    );
+    assert_eq!(s.system().params().len(), params);
+    s.set_config(Config::default());
+    assert!(s.solve().unwrap().outcome.is_ok());
+    assert_eq!(s.system().constraints().len(), n);
+}
