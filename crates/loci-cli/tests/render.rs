@@ -104,6 +104,28 @@ fn every_assembly_example_renders_as_an_isometric_wireframe() {
 }
 
 #[test]
+fn sketch_files_render_with_their_construction_lines_dashed() {
+    for name in ["slot", "bracket", "four_bar"] {
+        let p = repo(&format!("examples/sketches/{name}.json"));
+        let r = loci(&["render", p.to_str().unwrap()]);
+        let s = loci(&["solve", p.to_str().unwrap()]);
+        assert_eq!(r.status.code(), s.status.code(), "{name}");
+        let svg = String::from_utf8(r.stdout).unwrap();
+        assert!(
+            !handles(&svg, "data-entity", "entity").is_empty(),
+            "{name}: geometry drawn"
+        );
+        let dashed = handles(&svg, "data-entity", "construction");
+        // The slot's axis and the four-bar's ground are construction lines.
+        assert_eq!(
+            dashed.len(),
+            usize::from(name != "bracket"),
+            "{name}: {dashed:?}"
+        );
+    }
+}
+
+#[test]
 fn the_inconsistent_example_has_its_conflict_in_red() {
     let p = repo("examples/inconsistent.json");
     let r = loci(&["render", p.to_str().unwrap()]);

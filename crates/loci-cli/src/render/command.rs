@@ -25,6 +25,8 @@ pub(crate) fn run(
     }
     let (sys, group, opts, diagnosis, outcome) = if file.extension().is_some_and(|e| e == "slvs") {
         from_slvs(file, group, no_solve)?
+    } else if crate::sketch::is_sketch(file) {
+        from_sketch(file, no_solve)?
     } else {
         from_json(file, group, no_solve)?
     };
@@ -101,6 +103,37 @@ fn from_json(file: &Path, group: Option<u32>, no_solve: bool) -> anyhow::Result<
         ..RenderOptions::default()
     };
     Ok((problem.system, req.group, opts, Some(d), outcome))
+}
+
+/// A sketch file: solved with its soft constraints (which never outlive the solve), then
+/// diagnosed and drawn as the core system it writes, construction shapes dashed.
+fn from_sketch(file: &Path, no_solve: bool) -> anyhow::Result<Loaded> {
+    use loci::sketch::Sketch;
+    let mut l = crate::sketch::load(file)?;
+    let mut outcome = None;
+    if !no_solve {
+        let rep = l
+            .sketch
+            .solve()
+            .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+        outcome = Some(rep.outcome);
+    }
+    let sys = l.sketch.system().clone();
+    let group = Sketch::SHAPE_GROUP;
+    let d = loci::diagnose(&sys, group, &Config::default())
+        .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+    let construction: BTreeSet<loci::EntityId> = sys
+        .entities()
+        .iter()
+        .map(|e| e.h)
+        .filter(|&h| l.sketch.is_construction(h))
+        .collect();
+    let opts = RenderOptions {
+        title: Some(title(file, group, &d)),
+        construction,
+        ..RenderOptions::default()
+    };
+    Ok((sys, group, opts, Some(d), outcome))
 }
 
 fn from_slvs(file: &Path, group: Option<u32>, no_solve: bool) -> anyhow::Result<Loaded> {
