@@ -96,8 +96,10 @@ impl Family {
             }
             Family::Mesh => {
                 "triangulated mesh of N = n x n jittered points, each cell split by a random \
-                 diagonal: a distance on every edge, one corner fixed (rigid, with about N \
-                 distances implied by the others)"
+                 diagonal: a distance on every edge, one corner fixed. Rigid, and over-determined \
+                 by one distance per interior point (a triangulation has 3N - 3 - B edges for \
+                 2N - 3 degrees of freedom), so even the solvable variant holds about N \
+                 consistent but implied distances"
             }
         }
     }
