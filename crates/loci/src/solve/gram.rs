@@ -300,6 +300,16 @@ impl Gram {
             Gram::Sparse(s) => s.solve(rhs),
         }
     }
+
+    /// Solves `G Y = B` in place for the `k` columns of `B`, stored one after another: the
+    /// factor is read once for them all rather than once per column.
+    pub fn solve_many(&mut self, rhs: &mut [f64], k: usize) {
+        let n = rhs.len() / k.max(1);
+        match self {
+            Gram::Banded(b) => rhs.chunks_mut(n.max(1)).for_each(|c| b.solve(c)),
+            Gram::Sparse(s) => s.solve_many(rhs, k),
+        }
+    }
 }
 
 /// The first row each row of `G` meets, with rows at positions `pos` (or as they are).
@@ -604,6 +614,18 @@ impl SparseGram {
     #[cfg(test)]
     pub fn is_supernodal(&self) -> bool {
         matches!(self.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_))
+    }
+
+    /// Solves `G Y = B` in place for the `k` columns of `B`, one after another.
+    fn solve_many(&mut self, rhs: &mut [f64], k: usize) {
+        let req = self.symbolic.solve_in_place_scratch::<f64>(k, Par::Seq);
+        let Ok(mut mem) = MemBuffer::try_new(req) else {
+            rhs.chunks_mut(self.n.max(1)).for_each(|c| self.solve(c));
+            return;
+        };
+        let ldlt = LdltRef::new(&self.symbolic, &self.l_values);
+        let m = MatMut::from_column_major_slice_mut(rhs, self.n, k);
+        ldlt.solve_in_place_with_conj(Conj::No, m, Par::Seq, MemStack::new(&mut mem));
     }
 
     /// Solves `G y = rhs` in place with the last factorisation.
