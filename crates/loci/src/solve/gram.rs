@@ -791,4 +791,32 @@ mod tests {
             assert!((gy - b[r]).abs() < 1e-9, "row {r}: {gy} vs {}", b[r]);
         }
     }
+
+    #[test]
+    fn solving_many_right_hand_sides_at_once_matches_solving_each() {
+        let n = 12;
+        let (m, columns, rows) = truss(n, true);
+        let jv = values(&rows);
+        for kind in [Sparse::Simplicial, Sparse::Supernodal] {
+            let mut g = Gram::with(m, &columns, kind).unwrap();
+            g.assemble(&jv);
+            assert!(g.factor(0.0, 1e-10));
+            let k = 3;
+            let mut block: Vec<f64> = (0..m * k).map(|i| ((i * 13) % 7) as f64 - 3.0).collect();
+            let singles: Vec<Vec<f64>> = block
+                .chunks(m)
+                .map(|c| {
+                    let mut y = c.to_vec();
+                    g.solve(&mut y);
+                    y
+                })
+                .collect();
+            g.solve_many(&mut block, k);
+            for (c, y) in block.chunks(m).zip(&singles) {
+                for (a, b) in c.iter().zip(y) {
+                    assert!((a - b).abs() <= 1e-9 * (1.0 + b.abs()), "{a} vs {b}");
+                }
+            }
+        }
+    }
 }
