@@ -61,7 +61,7 @@ impl Settings {
     /// The generator sizes of a family and variant (the grid's are sides).
     #[must_use]
     pub fn sizes(&self, family: Family, variant: Variant) -> Vec<usize> {
-        let grid = family == Family::Grid;
+        let grid = family.takes_side();
         let all: &[usize] = if let Some(s) = &self.sizes {
             s
         } else {

@@ -50,8 +50,8 @@ pub fn seed_for(family: Family, size: usize) -> u64 {
     0x10C1_0000_0000 ^ (f << 40) ^ size as u64
 }
 
-/// Generates the problem of `family` and `variant` at `size` (at least 2; the grid takes
-/// the side `n` of an `n x n` grid and reports `n * n` squares as its size).
+/// Generates the problem of `family` and `variant` at `size` (at least 2; the grid, truss
+/// and mesh take the side `n` of an `n x n` layout and report `n * n` as their size).
 #[must_use]
 pub fn generate(family: Family, variant: Variant, size: usize) -> Problem {
     let mut b = Builder::new(seed_for(family, size), family.is_2d());
@@ -62,6 +62,8 @@ pub fn generate(family: Family, variant: Variant, size: usize) -> Problem {
         Family::Grid => grid(&mut b, size),
         Family::Fillets => fillets(&mut b, size),
         Family::Chain3d => chain_3d(&mut b, size),
+        Family::Truss => truss(&mut b, size),
+        Family::Mesh => mesh(&mut b, size),
     };
     b.finish(family, variant, size, extra)
 }
@@ -69,9 +71,10 @@ pub fn generate(family: Family, variant: Variant, size: usize) -> Problem {
 /// The size recorded for a generated problem of parameter `size` (the grid counts squares).
 #[must_use]
 pub fn recorded_size(family: Family, size: usize) -> usize {
-    match family {
-        Family::Grid => size.max(2) * size.max(2),
-        _ => size.max(2),
+    if family.takes_side() {
+        size.max(2) * size.max(2)
+    } else {
+        size.max(2)
     }
 }
 
@@ -417,5 +420,81 @@ fn chain_3d(b: &mut Builder, n: usize) -> Extra {
         } else {
             b.distance(0, 1)
         },
+    }
+}
+
+/// `n x n` points on a square lattice of spacing 10, each moved by up to 2.5 along each axis,
+/// the first fixed; `at(i, j)` is the point in column `i`, row `j`.
+fn jittered_lattice(b: &mut Builder, n: usize) -> impl Fn(usize, usize) -> usize {
+    for j in 0..n {
+        for i in 0..n {
+            let at = [
+                10.0 * i as f64 + b.rng.range(-2.5, 2.5),
+                10.0 * j as f64 + b.rng.range(-2.5, 2.5),
+                0.0,
+            ];
+            b.point(at, i == 0 && j == 0);
+        }
+    }
+    move |i, j| j * n + i
+}
+
+/// An `n x n` lattice of shared points with a distance on every bar between neighbours, and
+/// one diagonal bracing the first cell.
+fn truss(b: &mut Builder, n: usize) -> Extra {
+    let at = jittered_lattice(b, n);
+    for j in 0..n {
+        for i in 0..n {
+            if i + 1 < n {
+                b.line(at(i, j), at(i + 1, j));
+                b.cons.push(b.distance(at(i, j), at(i + 1, j)));
+            }
+            if j + 1 < n {
+                b.line(at(i, j), at(i, j + 1));
+                b.cons.push(b.distance(at(i, j), at(i, j + 1)));
+            }
+        }
+    }
+    b.cons.push(b.distance(at(0, 0), at(1, 1)));
+    // The braced first cell is rigid: its other diagonal follows from its sides.
+    Extra {
+        con: b.distance(at(1, 0), at(0, 1)),
+    }
+}
+
+/// An `n x n` lattice of points, each cell split into two triangles by a diagonal chosen at
+/// random, with a distance on every edge.
+fn mesh(b: &mut Builder, n: usize) -> Extra {
+    let at = jittered_lattice(b, n);
+    let mut first_diagonal = None;
+    for j in 0..n {
+        for i in 0..n {
+            if i + 1 < n {
+                b.line(at(i, j), at(i + 1, j));
+                b.cons.push(b.distance(at(i, j), at(i + 1, j)));
+            }
+            if j + 1 < n {
+                b.line(at(i, j), at(i, j + 1));
+                b.cons.push(b.distance(at(i, j), at(i, j + 1)));
+            }
+            if i + 1 < n && j + 1 < n {
+                let (p, q) = if b.rng.coin() {
+                    (at(i, j), at(i + 1, j + 1))
+                } else {
+                    (at(i + 1, j), at(i, j + 1))
+                };
+                first_diagonal.get_or_insert((p, q));
+                b.line(p, q);
+                b.cons.push(b.distance(p, q));
+            }
+        }
+    }
+    // The mesh is rigid: the first cell's other diagonal follows from its triangles.
+    let other = match first_diagonal {
+        Some((0, _)) => (at(1, 0), at(0, 1)),
+        _ => (at(0, 0), at(1, 1)),
+    };
+    Extra {
+        con: b.distance(other.0, other.1),
     }
 }

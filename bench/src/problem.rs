@@ -24,17 +24,30 @@ pub enum Family {
     /// Line segments in space: lengths, angles between neighbours, points in a few
     /// workplanes.
     Chain3d,
+    /// A square lattice of shared points with a distance on every bar: one large component
+    /// whose graph is two-dimensional.
+    Truss,
+    /// A triangulated planar mesh with a distance on every edge.
+    Mesh,
 }
 
 impl Family {
     /// Every family, in report order.
-    pub const ALL: [Family; 5] = [
+    pub const ALL: [Family; 7] = [
         Family::Chain,
         Family::Triangles,
         Family::Grid,
         Family::Fillets,
         Family::Chain3d,
+        Family::Truss,
+        Family::Mesh,
     ];
+
+    /// Whether the generator takes the side `n` of an `n x n` layout rather than a count.
+    #[must_use]
+    pub fn takes_side(self) -> bool {
+        matches!(self, Family::Grid | Family::Truss | Family::Mesh)
+    }
 
     /// The snake_case name.
     #[must_use]
@@ -45,6 +58,8 @@ impl Family {
             Family::Grid => "grid",
             Family::Fillets => "fillets",
             Family::Chain3d => "chain_3d",
+            Family::Truss => "truss",
+            Family::Mesh => "mesh",
         }
     }
 
@@ -73,6 +88,18 @@ impl Family {
                 "chain of N line segments in space sharing end points: lengths, angles \
                  between neighbours, every other point in one of three workplanes, first point \
                  fixed (about N/2 DOF left)"
+            }
+            Family::Truss => {
+                "truss of N = n x n shared points on a jittered square lattice: a distance on \
+                 every horizontal and vertical bar, one diagonal bracing the first cell, one \
+                 corner fixed (a mechanism with about 2n DOF left)"
+            }
+            Family::Mesh => {
+                "triangulated mesh of N = n x n jittered points, each cell split by a random \
+                 diagonal: a distance on every edge, one corner fixed. Rigid, and over-determined \
+                 by one distance per interior point (a triangulation has 3N - 3 - B edges for \
+                 2N - 3 degrees of freedom), so even the solvable variant holds about N \
+                 consistent but implied distances"
             }
         }
     }

@@ -95,7 +95,7 @@ fn fmt_ratio(r: f64) -> String {
 }
 
 fn size_label(f: Family, size: usize) -> String {
-    if f == Family::Grid {
+    if f.takes_side() {
         let side = (size as f64).sqrt().round() as usize;
         format!("{side}x{side} ({size})")
     } else {

@@ -177,6 +177,27 @@ fn adjacency(nrows: usize, columns: &Columns) -> (Vec<usize>, Vec<u32>) {
 /// factorisation.
 const DENSE_MAX: usize = 24;
 
+/// How the sparse path factorises `G` once its rows are in fill-reducing (AMD) order.
+///
+/// Both eliminate the rows in the same order and drop a row exactly when its pivot falls at or
+/// below the tolerance, so they find the same dependent rows and the same step, to rounding.
+/// They differ only in speed: column by column (simplicial) is quicker when the factor is thin
+/// (few entries per column, as for a chain or a tree), dense blocks of columns sharing a
+/// pattern (supernodal) when it is thick (a two-dimensional mesh, whose factor fills in around
+/// its separators).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Sparse {
+    /// Chosen from the symbolic analysis: supernodal when the predicted flops per entry of the
+    /// factor are high enough for dense blocks to pay.
+    Auto,
+    /// Column by column.
+    #[allow(dead_code)]
+    Simplicial,
+    /// Dense blocks of columns.
+    #[allow(dead_code)]
+    Supernodal,
+}
+
 /// `G = J Jᵀ` of one component and its rank-revealing factorisation: within its envelope when
 /// small or banded as it stands, sparse with a fill-reducing ordering otherwise.
 pub(crate) enum Gram {
@@ -202,6 +223,12 @@ impl Gram {
     /// Builds the structure from the nonzeros of `J`, given column by column as lists of
     /// `(row, index into J's values)`.
     pub fn new(nrows: usize, columns: &Columns) -> Option<Self> {
+        Self::with(nrows, columns, Sparse::Auto)
+    }
+
+    /// Like [`Gram::new`], with the sparse factorisation (when the envelope does not win)
+    /// chosen by `sparse`.
+    pub fn with(nrows: usize, columns: &Columns, sparse: Sparse) -> Option<Self> {
         // Products of two entries of a column of J, each adding to one entry of G.
         let pairs = Self::products(columns);
         if pairs > MAX_PRODUCTS {
@@ -238,7 +265,7 @@ impl Gram {
             ))));
         }
         let pattern = Pattern::new(nrows, columns);
-        SparseGram::new(nrows, pattern).map(|s| Gram::Sparse(Box::new(s)))
+        SparseGram::new(nrows, pattern, sparse).map(|s| Gram::Sparse(Box::new(s)))
     }
 
     /// Computes `G` from the Jacobian values `jv`.
@@ -271,6 +298,16 @@ impl Gram {
         match self {
             Gram::Banded(b) => b.solve(rhs),
             Gram::Sparse(s) => s.solve(rhs),
+        }
+    }
+
+    /// Solves `G Y = B` in place for the `k` columns of `B`, stored one after another: the
+    /// factor is read once for them all rather than once per column.
+    pub fn solve_many(&mut self, rhs: &mut [f64], k: usize) {
+        let n = rhs.len() / k.max(1);
+        match self {
+            Gram::Banded(b) => rhs.chunks_mut(n.max(1)).for_each(|c| b.solve(c)),
+            Gram::Sparse(s) => s.solve_many(rhs, k),
         }
     }
 }
@@ -449,7 +486,7 @@ pub(crate) struct SparseGram {
 }
 
 impl SparseGram {
-    fn new(nrows: usize, pattern: Pattern) -> Option<Self> {
+    fn new(nrows: usize, pattern: Pattern, sparse: Sparse) -> Option<Self> {
         let Pattern {
             col_ptr,
             row_idx,
@@ -463,7 +500,11 @@ impl SparseGram {
             Side::Upper,
             SymmetricOrdering::Amd,
             CholeskySymbolicParams {
-                supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
+                supernodal_flop_ratio_threshold: match sparse {
+                    Sparse::Auto => SupernodalThreshold::AUTO,
+                    Sparse::Simplicial => SupernodalThreshold::FORCE_SIMPLICIAL,
+                    Sparse::Supernodal => SupernodalThreshold::FORCE_SUPERNODAL,
+                },
                 ..Default::default()
             },
         )
@@ -533,22 +574,58 @@ impl SparseGram {
 
     /// The rows whose pivots were dropped in the last factorisation, ascending.
     pub fn dropped(&self) -> Vec<usize> {
-        let SymbolicCholeskyRaw::Simplicial(s) = self.symbolic.raw() else {
-            return Vec::new();
-        };
-        let col_ptr = s.col_ptr();
         let mut out = Vec::new();
-        for k in 0..self.n {
-            if self.l_values[col_ptr[k]] >= DROPPED {
-                let row = match self.symbolic.perm() {
+        let mut keep = |k: usize, d: f64| {
+            if d >= DROPPED {
+                out.push(match self.symbolic.perm() {
                     Some(p) => p.arrays().0[k],
                     None => k,
-                };
-                out.push(row);
+                });
+            }
+        };
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Simplicial(s) => {
+                // D is the first entry of each column.
+                let col_ptr = s.col_ptr();
+                for k in 0..self.n {
+                    keep(k, self.l_values[col_ptr[k]]);
+                }
+            }
+            SymbolicCholeskyRaw::Supernodal(s) => {
+                // Each supernode is a dense column-major block whose top square holds D on its
+                // diagonal.
+                let val_ptr = s.col_ptr_for_val();
+                let (begin, end) = (s.supernode_begin(), s.supernode_end());
+                for sn in 0..s.n_supernodes() {
+                    let ncols = end[sn] - begin[sn];
+                    let base = val_ptr[sn];
+                    let nrows = (val_ptr[sn + 1] - base) / ncols.max(1);
+                    for j in 0..ncols {
+                        keep(begin[sn] + j, self.l_values[base + j * nrows + j]);
+                    }
+                }
             }
         }
         out.sort_unstable();
         out
+    }
+
+    /// Whether the factorisation works in dense blocks of columns.
+    #[cfg(test)]
+    pub fn is_supernodal(&self) -> bool {
+        matches!(self.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_))
+    }
+
+    /// Solves `G Y = B` in place for the `k` columns of `B`, one after another.
+    fn solve_many(&mut self, rhs: &mut [f64], k: usize) {
+        let req = self.symbolic.solve_in_place_scratch::<f64>(k, Par::Seq);
+        let Ok(mut mem) = MemBuffer::try_new(req) else {
+            rhs.chunks_mut(self.n.max(1)).for_each(|c| self.solve(c));
+            return;
+        };
+        let ldlt = LdltRef::new(&self.symbolic, &self.l_values);
+        let m = MatMut::from_column_major_slice_mut(rhs, self.n, k);
+        ldlt.solve_in_place_with_conj(Conj::No, m, Par::Seq, MemStack::new(&mut mem));
     }
 
     /// Solves `G y = rhs` in place with the last factorisation.
@@ -557,5 +634,189 @@ impl SparseGram {
         let stack = MemStack::new(&mut self.mem);
         let m = MatMut::from_column_major_slice_mut(rhs, self.n, 1);
         ldlt.solve_in_place_with_conj(Conj::No, m, Par::Seq, stack);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The Jacobian of a truss: an `n x n` lattice of jittered points with a unit-normalised
+    /// distance row on every bar, a diagonal bracing the first cell, and (when `extra`) the
+    /// first cell's other diagonal, which depends on the cell's other rows. The first point is
+    /// fixed (its columns left out). Returns the rows, the column lists and the dense rows.
+    fn truss(n: usize, extra: bool) -> (usize, Columns, Vec<Vec<(usize, f64)>>) {
+        let mut seed = 0x5eed_u64;
+        let mut jitter = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 5.0
+        };
+        let at = |i: usize, j: usize| j * n + i;
+        let pts: Vec<[f64; 2]> = (0..n * n)
+            .map(|k| [10.0 * (k % n) as f64 + jitter(), 10.0 * (k / n) as f64 + jitter()])
+            .collect();
+        let mut bars = Vec::new();
+        for j in 0..n {
+            for i in 0..n {
+                if i + 1 < n {
+                    bars.push((at(i, j), at(i + 1, j)));
+                }
+                if j + 1 < n {
+                    bars.push((at(i, j), at(i, j + 1)));
+                }
+            }
+        }
+        bars.push((at(0, 0), at(1, 1)));
+        if extra {
+            bars.push((at(1, 0), at(0, 1)));
+        }
+        let mut rows = Vec::new();
+        for &(p, q) in &bars {
+            let d = [pts[p][0] - pts[q][0], pts[p][1] - pts[q][1]];
+            let len = d[0].hypot(d[1]);
+            let mut row = Vec::new();
+            for (pt, s) in [(p, 1.0), (q, -1.0)] {
+                if pt != 0 {
+                    // Point k has columns 2k - 2 and 2k - 1.
+                    row.push((2 * pt - 2, s * d[0] / len));
+                    row.push((2 * pt - 1, s * d[1] / len));
+                }
+            }
+            rows.push(row);
+        }
+        let mut lists = vec![Vec::new(); 2 * n * n - 2];
+        let mut v = 0u32;
+        for (r, row) in rows.iter().enumerate() {
+            for &(c, _) in row {
+                lists[c].push((r as u32, v));
+                v += 1;
+            }
+        }
+        (rows.len(), Columns::from_lists(&lists), rows)
+    }
+
+    fn values(rows: &[Vec<(usize, f64)>]) -> Vec<f64> {
+        rows.iter().flatten().map(|&(_, x)| x).collect()
+    }
+
+    /// `Jᵀ y`, the step the solver takes from the solution `y` of `G y = rhs`.
+    fn step(rows: &[Vec<(usize, f64)>], y: &[f64], ncols: usize) -> Vec<f64> {
+        let mut dx = vec![0.0; ncols];
+        for (row, &yi) in rows.iter().zip(y) {
+            for &(c, x) in row {
+                dx[c] += x * yi;
+            }
+        }
+        dx
+    }
+
+    fn factor_and_solve(g: &mut Gram, jv: &[f64], rhs: &[f64]) -> (Vec<usize>, Vec<f64>) {
+        g.assemble(jv);
+        assert!(g.factor(0.0, 1e-10));
+        let mut y = rhs.to_vec();
+        g.solve(&mut y);
+        (g.dropped(), y)
+    }
+
+    #[test]
+    fn supernodal_and_simplicial_agree_on_a_truss_with_a_dependent_row() {
+        for extra in [false, true] {
+            let n = 14;
+            let (m, columns, rows) = truss(n, extra);
+            let jv = values(&rows);
+            let ncols = 2 * n * n - 2;
+            // A consistent right-hand side (J v for some v) and an inconsistent one.
+            let v: Vec<f64> = (0..ncols).map(|c| ((c * 7) % 11) as f64 - 5.0).collect();
+            let consistent: Vec<f64> = rows
+                .iter()
+                .map(|row| row.iter().map(|&(c, x)| x * v[c]).sum())
+                .collect();
+            let inconsistent: Vec<f64> = (0..m).map(|r| ((r * 5) % 9) as f64 - 4.0).collect();
+            let mut simplicial = Gram::with(m, &columns, Sparse::Simplicial).unwrap();
+            let mut supernodal = Gram::with(m, &columns, Sparse::Supernodal).unwrap();
+            let mut auto = Gram::new(m, &columns).unwrap();
+            let Gram::Sparse(s) = &supernodal else {
+                panic!("a truss does not band")
+            };
+            assert!(s.is_supernodal());
+            let Gram::Sparse(s) = &simplicial else {
+                panic!("a truss does not band")
+            };
+            assert!(!s.is_supernodal());
+            for rhs in [&consistent, &inconsistent] {
+                let (d1, y1) = factor_and_solve(&mut simplicial, &jv, rhs);
+                let (d2, y2) = factor_and_solve(&mut supernodal, &jv, rhs);
+                let (d3, y3) = factor_and_solve(&mut auto, &jv, rhs);
+                // The same rows, in the same order, are eliminated: the same one is dropped.
+                assert_eq!(d1, d2);
+                assert_eq!(d1, d3);
+                assert_eq!(d1.len(), usize::from(extra), "{d1:?}");
+                if extra {
+                    // One of the first cell's six rows: the four sides and two diagonals.
+                    let cell = [0, 1, 2, 2 * n - 1, m - 2, m - 1];
+                    assert!(cell.contains(&d1[0]), "{d1:?}");
+                }
+                let scale = y1.iter().fold(1.0f64, |a, x| a.max(x.abs()));
+                for (a, b) in y1.iter().zip(&y2).chain(y1.iter().zip(&y3)) {
+                    assert!((a - b).abs() <= 1e-9 * scale, "{a} vs {b}");
+                }
+            }
+            // On a consistent system the step J^T y is the minimum-norm solution of J dx = rhs
+            // whichever dependent row was dropped: it satisfies every row, the dropped one too.
+            let (_, y) = factor_and_solve(&mut supernodal, &jv, &consistent);
+            let dx = step(&rows, &y, ncols);
+            for (row, &b) in rows.iter().zip(&consistent) {
+                let jdx: f64 = row.iter().map(|&(c, x)| x * dx[c]).sum();
+                assert!((jdx - b).abs() < 1e-8, "{jdx} vs {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_damped_supernodal_factorisation_drops_nothing_and_solves_the_shifted_system() {
+        let n = 12;
+        let (m, columns, rows) = truss(n, true);
+        let jv = values(&rows);
+        let mut g = Gram::with(m, &columns, Sparse::Supernodal).unwrap();
+        g.assemble(&jv);
+        assert!(g.factor(0.5, 1e-10));
+        assert!(g.dropped().is_empty());
+        let b: Vec<f64> = (0..m).map(|r| (r % 5) as f64 - 2.0).collect();
+        let mut y = b.clone();
+        g.solve(&mut y);
+        // (J Jᵀ + 0.5 I) y = b, multiplied back.
+        let dx = step(&rows, &y, 2 * n * n - 2);
+        for (r, row) in rows.iter().enumerate() {
+            let gy: f64 = row.iter().map(|&(c, x)| x * dx[c]).sum::<f64>() + 0.5 * y[r];
+            assert!((gy - b[r]).abs() < 1e-9, "row {r}: {gy} vs {}", b[r]);
+        }
+    }
+
+    #[test]
+    fn solving_many_right_hand_sides_at_once_matches_solving_each() {
+        let n = 12;
+        let (m, columns, rows) = truss(n, true);
+        let jv = values(&rows);
+        for kind in [Sparse::Simplicial, Sparse::Supernodal] {
+            let mut g = Gram::with(m, &columns, kind).unwrap();
+            g.assemble(&jv);
+            assert!(g.factor(0.0, 1e-10));
+            let k = 3;
+            let mut block: Vec<f64> = (0..m * k).map(|i| ((i * 13) % 7) as f64 - 3.0).collect();
+            let singles: Vec<Vec<f64>> = block
+                .chunks(m)
+                .map(|c| {
+                    let mut y = c.to_vec();
+                    g.solve(&mut y);
+                    y
+                })
+                .collect();
+            g.solve_many(&mut block, k);
+            for (c, y) in block.chunks(m).zip(&singles) {
+                for (a, b) in c.iter().zip(y) {
+                    assert!((a - b).abs() <= 1e-9 * (1.0 + b.abs()), "{a} vs {b}");
+                }
+            }
+        }
     }
 }

@@ -814,10 +814,7 @@ impl Component {
         if let (Some(gram), true) = (self.gram.as_mut(), factored) {
             fin.dropped = gram.dropped();
             if cfg.find_failed {
-                for &k in &fin.dropped {
-                    fin.dependencies
-                        .push(dependencies(gram, &self.columns, jn, k, m));
-                }
+                fin.dependencies = dependencies(gram, &self.columns, jn, &fin.dropped, m);
             }
         } else {
             // No factorisation: count every row as unresolved.
@@ -844,26 +841,58 @@ fn generic(c: usize, attempt: usize) -> f64 {
     }
 }
 
-/// The rows that row `k` of the normalised Jacobian is a combination of: solve
-/// `G c = J J_kᵀ`; dropped rows get (almost) nothing, so `c` expresses row `k` in the others.
-fn dependencies(gram: &mut Gram, columns: &Columns, jn: &[f64], k: usize, m: usize) -> Vec<usize> {
-    let mut b = vec![0.0; m];
-    for col in columns.iter() {
-        let Some(&(_, ik)) = col.iter().find(|&&(row, _)| row as usize == k) else {
-            continue;
-        };
-        let vk = jn[ik as usize];
-        for &(row, idx) in col {
-            b[row as usize] += jn[idx as usize] * vk;
+/// How many dependency right-hand sides are solved together.
+const DEPENDENCY_BLOCK: usize = 32;
+
+/// For each dropped row `k`, the rows that row `k` of the normalised Jacobian is a combination
+/// of: solve `G c = J J_kᵀ`; dropped rows get (almost) nothing, so `c` expresses row `k` in the
+/// others. The right-hand sides are built in one pass over `J` and solved in blocks, since a
+/// mesh of many shared points can drop thousands of implied rows.
+fn dependencies(
+    gram: &mut Gram,
+    columns: &Columns,
+    jn: &[f64],
+    dropped: &[usize],
+    m: usize,
+) -> Vec<Vec<usize>> {
+    // The entries of each dropped row, in column order: (column, index into jn).
+    let mut slot = vec![usize::MAX; m];
+    for (s, &k) in dropped.iter().enumerate() {
+        slot[k] = s;
+    }
+    let mut entries: Vec<Vec<(usize, u32)>> = vec![Vec::new(); dropped.len()];
+    for (c, col) in columns.iter().enumerate() {
+        // The first entry of a row in a column, as a search by row would find it.
+        for &(row, ik) in col {
+            let s = slot[row as usize];
+            if s != usize::MAX && entries[s].last().is_none_or(|&(lc, _)| lc != c) {
+                entries[s].push((c, ik));
+            }
         }
     }
-    gram.solve(&mut b);
-    let mut out = vec![k];
-    for (i, &c) in b.iter().enumerate() {
-        if i != k && c.abs() > 1e-6 {
-            out.push(i);
+    let mut out = Vec::with_capacity(dropped.len());
+    for (block, ks) in dropped.chunks(DEPENDENCY_BLOCK).enumerate() {
+        let mut b = vec![0.0; m * ks.len()];
+        for (t, rhs) in b.chunks_mut(m.max(1)).enumerate() {
+            for &(c, ik) in &entries[block * DEPENDENCY_BLOCK + t] {
+                let vk = jn[ik as usize];
+                for &(row, idx) in columns.col(c) {
+                    rhs[row as usize] += jn[idx as usize] * vk;
+                }
+            }
+        }
+        gram.solve_many(&mut b, ks.len());
+        for (&k, c) in ks.iter().zip(b.chunks(m.max(1))) {
+            let mut deps = vec![k];
+            deps.extend(
+                c.iter()
+                    .enumerate()
+                    .filter(|&(i, c)| i != k && c.abs() > 1e-6)
+                    .map(|(i, _)| i),
+            );
+            deps.sort_unstable();
+            out.push(deps);
         }
     }
-    out.sort_unstable();
     out
 }
