@@ -117,7 +117,7 @@ pub fn cell(r: &BrepResult, loci_ms: f64) -> String {
             b.ms / loci_ms
         ),
         Ok(b) => format!(
-            "not converged after {} passes, {:.0} ms (pivots off by {:.1e}, angles by {:.1e}°)",
+            "not converged after {} passes, {:.0} ms (pivots off by {:.1e}, angles by {:.1}°)",
             b.passes, b.ms, b.point_error, b.angle_error_deg
         ),
         Err(why) => why.clone(),
