@@ -78,7 +78,7 @@ const results = await history.runAll(partHistory, {
 const ms = performance.now() - t0;
 
 // Measured here, not taken from the solver: the pivots on the tips, hinges parallel, the
-// arms 30 degrees apart.
+// arms 30 degrees apart (signed).
 scene.updateMatrixWorld(true);
 const world = (c, p) => new THREE.Vector3(...p).applyMatrix4(c.matrixWorld);
 const dir = (c, d) => new THREE.Vector3(...d).applyQuaternion(c.getWorldQuaternion(new THREE.Quaternion()));
@@ -88,7 +88,9 @@ for (let i = 1; i < links.length; i++) {
   maxPoint = Math.max(maxPoint, world(a, [1, 0, 0]).distanceTo(world(b, [0, 0, 0])));
   const ha = dir(a, [0, 0, 1]), hb = dir(b, [0, 0, 1]);
   maxAngle = Math.max(maxAngle, THREE.MathUtils.radToDeg(ha.angleTo(hb)));
-  const arm = THREE.MathUtils.radToDeg(dir(a, [1, 0, 0]).angleTo(dir(b, [1, 0, 0])));
+  // Signed about the first hinge, so that a chain folded the other way (-30) does not pass.
+  const ua = dir(a, [1, 0, 0]), ub = dir(b, [1, 0, 0]);
+  const arm = THREE.MathUtils.radToDeg(Math.atan2(new THREE.Vector3().crossVectors(ua, ub).dot(ha), ua.dot(ub)));
   maxAngle = Math.max(maxAngle, Math.abs(arm - 30));
 }
 const statuses = {};
