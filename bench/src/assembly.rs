@@ -312,18 +312,16 @@ pub struct Timing {
     pub stepped: Option<(usize, bool, f64)>,
     /// SolveSpace on the same chain, when run: its verdict and solve time in milliseconds.
     pub slvs: Option<(String, f64)>,
+    /// BREP.io's own relaxation on the same chain, when it applies: what it did, or why it
+    /// was not run.
+    pub brep: Option<crate::assembly_brep::BrepResult>,
 }
 
-/// Runs the chain of `n` links (from the same start as loci's) through SolveSpace's Python
-/// binding in `bench/.venv`, if it is there: its verdict and best solve time of `reps`.
-pub fn slvs_chain(n: usize, reps: usize, bench: &std::path::Path) -> Option<(String, f64)> {
-    let py = bench.join(".venv/bin/python");
-    if !py.exists() {
-        return None;
-    }
-    let asm = chain(n, 1);
-    let poses: Vec<Vec<f64>> = asm
-        .components
+/// Every component's starting pose as `[tx, ty, tz, w, x, y, z]`: what the peers' runners
+/// read, so that they start where loci does.
+#[must_use]
+pub fn start_poses(asm: &Assembly) -> Vec<Vec<f64>> {
+    asm.components
         .iter()
         .map(|c| {
             c.pose
@@ -333,7 +331,17 @@ pub fn slvs_chain(n: usize, reps: usize, bench: &std::path::Path) -> Option<(Str
                 .copied()
                 .collect()
         })
-        .collect();
+        .collect()
+}
+
+/// Runs the chain of `n` links (from the same start as loci's) through SolveSpace's Python
+/// binding in `bench/.venv`, if it is there: its verdict and best solve time of `reps`.
+pub fn slvs_chain(n: usize, reps: usize, bench: &std::path::Path) -> Option<(String, f64)> {
+    let py = bench.join(".venv/bin/python");
+    if !py.exists() {
+        return None;
+    }
+    let poses = start_poses(&chain(n, 1));
     let dir = std::env::temp_dir();
     let start = dir.join(format!("loci-asm-start-{}-{n}.json", std::process::id()));
     let out = dir.join(format!("loci-asm-slvs-{}-{n}.json", std::process::id()));
@@ -361,6 +369,9 @@ pub fn slvs_chain(n: usize, reps: usize, bench: &std::path::Path) -> Option<(Str
     };
     Some((verdict.into(), v["solve_ms"].as_f64().unwrap_or(f64::NAN)))
 }
+
+/// BREP.io's pass cap at 100 links.
+pub const BREP_PASSES_100: usize = 5_000;
 
 /// Times `make()`'s assembly: the best of `reps` simultaneous solves (each on a fresh copy,
 /// building the constraint system included), then, when `steps` is set, one stepped run of at
@@ -398,6 +409,7 @@ pub fn time(name: &str, make: &dyn Fn() -> Assembly, reps: usize, steps: Option<
         converged: r.all_hold(),
         stepped,
         slvs: None,
+        brep: None,
     }
 }
 
@@ -420,6 +432,16 @@ pub fn run_all(
             steps,
         );
         t.slvs = bench.and_then(|b| slvs_chain(n, if n >= 100 { 1 } else { reps }, b));
+        // BREP.io relaxes one constraint at a time: thousands of passes at 10 links, so it
+        // is run up to 100 links only, capped in passes and time.
+        t.brep = bench.filter(|_| n <= 100).map(|b| {
+            let (passes, secs) = if n <= 10 {
+                (20_000, 120)
+            } else {
+                (BREP_PASSES_100, 600)
+            };
+            crate::assembly_brep::brep_chain(n, passes, std::time::Duration::from_secs(secs), b)
+        });
         out.push(t);
     }
     if others {
@@ -443,8 +465,8 @@ pub fn run_all(
 #[must_use]
 pub fn table(t: &[Timing]) -> String {
     let mut s = String::new();
-    s.push_str("| assembly | components | mates | loci (ms) | Newton iterations | residual | all mates hold | stepped passes (seed's relaxation) | SolveSpace (slvs) |\n");
-    s.push_str("|---|---:|---:|---:|---:|---:|:---:|---:|---|\n");
+    s.push_str("| assembly | components | mates | loci (ms) | Newton iterations | residual | all mates hold | stepped passes (seed's relaxation) | BREP.io (the seed's own solver) | SolveSpace (slvs) |\n");
+    s.push_str("|---|---:|---:|---:|---:|---:|:---:|---:|---|---|\n");
     for x in t {
         let stepped = match x.stepped {
             Some((p, true, ms)) => format!("{p} ({ms:.0} ms)"),
@@ -459,9 +481,13 @@ pub fn table(t: &[Timing]) -> String {
             Some((v, _)) => v.clone(),
             None => "not run".into(),
         };
+        let brep = match &x.brep {
+            Some(r) => crate::assembly_brep::cell(r, x.ms),
+            None => "not run".into(),
+        };
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {:.2} | {} | {:.1e} | {} | {} | {} |",
+            "| {} | {} | {} | {:.2} | {} | {:.1e} | {} | {} | {} | {} |",
             x.name,
             x.components,
             x.mates,
@@ -470,6 +496,7 @@ pub fn table(t: &[Timing]) -> String {
             x.residual,
             if x.converged { "yes" } else { "no" },
             stepped,
+            brep,
             slvs
         );
     }

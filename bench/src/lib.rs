@@ -7,6 +7,7 @@
 //! itself ([`check`]), and writes a markdown table and an SVG plot ([`report`]).
 
 pub mod assembly;
+pub mod assembly_brep;
 pub mod check;
 pub mod compare;
 pub mod drag;

@@ -5,6 +5,7 @@ mod angle;
 mod examples;
 mod mates;
 mod report;
+mod roots;
 mod stepped;
 
 use loci::assembly::{Assembly, Component, Mate, MateKind, Pose, Reference, Selection};

@@ -270,3 +270,55 @@ fn a_grounded_component_never_moves_whatever_the_mates_ask() {
     assert_eq!(asm.components[0].pose, Pose::IDENTITY);
     assert_eq!(asm.components[1].pose, Pose::IDENTITY);
 }
+
+#[test]
+fn touch_align_point_point_removes_three() {
+    // The part turned about its corner: the corners still touch, so the mate holds as it
+    // stands, and a nudge is pulled back onto the ground's corner with three turns left.
+    check(
+        K::TouchAlign,
+        "corner",
+        "corner",
+        false,
+        Pose::from_axis_angle([0.0; 3], [1.0, 2.0, -1.0], 35.0),
+        3,
+    );
+    // Another vertex of the part onto the ground's corner.
+    check(
+        K::TouchAlign,
+        "corner",
+        "far",
+        false,
+        at([-1.0, -1.0, 0.0]),
+        3,
+    );
+}
+
+#[test]
+fn distance_line_line_holds_turned_about_the_line_and_shifted_along_it() {
+    // B's edge parallel to A's, 2 apart, B turned about its own edge and slid along it: every
+    // one of those motions keeps the mate, so the three left are the slide, the turn about
+    // the edge and the swing of B's edge about A's.
+    let pose = Pose::from_axis_angle([-0.8, 0.0, 2.0], [1.0, 0.0, 0.0], 70.0);
+    check(K::Distance { value: 2.0 }, "edge", "edge", false, pose, 3);
+    // Apart along z instead of y.
+    check(
+        K::Distance { value: 2.0 },
+        "edge",
+        "edge",
+        false,
+        at([0.0, 0.0, -2.0]),
+        3,
+    );
+}
+
+#[test]
+fn coincident_line_plane_removes_two() {
+    // B's edge (along x) in A's top plane (z = 1), anywhere in it.
+    check(K::Coincident, "top", "edge", false, at([0.3, 0.5, 1.0]), 4);
+    // The other way round: A's edge (the x axis) in B's top plane, B turned 30° about x and
+    // shifted so that its plane goes through the axis.
+    let c = 30f64.to_radians();
+    let pose = Pose::from_axis_angle([0.0, c.sin(), -c.cos()], [1.0, 0.0, 0.0], 30.0);
+    check(K::Coincident, "edge", "top", false, pose, 4);
+}
