@@ -10,6 +10,7 @@ pub mod assembly;
 pub mod check;
 pub mod compare;
 pub mod drag;
+pub mod drag_peers;
 pub mod generate;
 pub mod peers;
 pub mod problem;
