@@ -152,3 +152,49 @@ impl Sketch {
             .collect()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Two quarter arcs meeting at (0, 1), tangent there, the second about `c2`.
+    fn two_arcs(c2: [f64; 2], end2: [f64; 2]) -> Sketch {
+        let mut s = Sketch::new();
+        let c = s.add_point(0.0, 0.0).unwrap();
+        let a0 = s.add_point(1.0, 0.0).unwrap();
+        let joint = s.add_point(0.0, 1.0).unwrap();
+        let a = s.add_arc(c, a0, joint).unwrap();
+        let c2 = s.add_point(c2[0], c2[1]).unwrap();
+        let e2 = s.add_point(end2[0], end2[1]).unwrap();
+        let b = s.add_arc(c2, joint, e2).unwrap();
+        s.tangent(a, End::End, b, End::Start).unwrap();
+        s
+    }
+
+    #[test]
+    fn arcs_touching_from_outside_read_negative_and_from_inside_positive() {
+        let v = |s: &Sketch| s.tangent_sides()[0].measure(s.system().params());
+        // An S: the second arc's centre beyond the joint.
+        let outside = two_arcs([0.0, 2.0], [1.0, 2.0]);
+        assert!(matches!(outside.tangent_sides()[..], [Side::ArcArc { .. }]));
+        assert!((v(&outside) + 1.0).abs() < 1e-12);
+        // A C: the second arc's centre on this side of the joint, half way.
+        let inside = two_arcs([0.0, 0.5], [0.5, 0.5]);
+        assert!((v(&inside) - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_line_reads_the_side_its_tangent_circle_is_on() {
+        let mut s = Sketch::new();
+        let c = s.add_point(0.0, 0.0).unwrap();
+        let circle = s.add_circle(c, 1.0).unwrap();
+        let p = s.add_point(-1.0, 1.0).unwrap();
+        let q = s.add_point(1.0, 1.0).unwrap();
+        let line = s.add_line(p, q).unwrap();
+        s.tangent(line, End::Start, circle, End::Start).unwrap();
+        let sides = s.tangent_sides();
+        assert!(matches!(sides[..], [Side::LineCircle { .. }]));
+        // The centre is to the right of the line's direction from p to q: negative.
+        assert!((sides[0].measure(s.system().params()) + 2.0).abs() < 1e-12);
+    }
+}
