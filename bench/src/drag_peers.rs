@@ -169,10 +169,18 @@ pub fn run_peer(
         .rev()
         .find_map(|l| serde_json::from_str::<serde_json::Value>(l).ok());
     let Some(v) = json.filter(|_| status.success()) else {
-        let why = stderr
-            .lines()
+        // The last line that says what went wrong (node ends with its version line).
+        let lines: Vec<&str> = stderr.lines().filter(|l| !l.trim().is_empty()).collect();
+        let telling = |l: &&&str| {
+            let l = l.to_ascii_lowercase();
+            l.contains("error") || l.contains("memory") || l.contains("abort")
+        };
+        let why = lines
+            .iter()
             .rev()
-            .find(|l| !l.trim().is_empty())
+            .find(telling)
+            .or_else(|| lines.iter().rev().find(|l| !l.starts_with("Node.js")))
+            .copied()
             .unwrap_or("no output")
             .trim()
             .chars()
@@ -182,6 +190,14 @@ pub fn run_peer(
     };
     let num = |k: &str| v.get(k).and_then(serde_json::Value::as_f64).unwrap_or(f64::NAN);
     let count = |k: &str| v.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0) as usize;
+    // A solver that refuses the sketch fails every step quickly: its times are not a drag's.
+    if count("steps") > 0 && count("failed") >= count("steps") {
+        let setup = v
+            .get("setup_result")
+            .map(|r| format!(" (its first solve returned {r})"))
+            .unwrap_or_default();
+        return PeerRun::Skipped(format!("its solver failed every step{setup}"));
+    }
     PeerRun::Ran(DragFigures {
         sketch,
         shapes: count("shapes"),
