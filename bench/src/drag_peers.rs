@@ -80,7 +80,9 @@ impl Peer {
                 return Err("no node on PATH".into());
             }
             if !bench.join("node_modules").join(pkg).exists() {
-                return Err(format!("npm package {pkg} not installed (npm install in bench/)"));
+                return Err(format!(
+                    "npm package {pkg} not installed (npm install in bench/)"
+                ));
             }
         }
         Ok((program, bench.join("runners").join(script)))
@@ -188,7 +190,11 @@ pub fn run_peer(
             .collect::<String>();
         return PeerRun::Skipped(format!("failed ({status}): {why}"));
     };
-    let num = |k: &str| v.get(k).and_then(serde_json::Value::as_f64).unwrap_or(f64::NAN);
+    let num = |k: &str| {
+        v.get(k)
+            .and_then(serde_json::Value::as_f64)
+            .unwrap_or(f64::NAN)
+    };
     let count = |k: &str| v.get(k).and_then(serde_json::Value::as_u64).unwrap_or(0) as usize;
     // A solver that refuses the sketch fails every step quickly: its times are not a drag's.
     if count("steps") > 0 && count("failed") >= count("steps") {
@@ -233,7 +239,14 @@ pub fn table(rows: &[Row]) -> String {
         let line = |who: &str, f: &DragFigures, ratio: &str| {
             format!(
                 "| {} | {} | {who} | {:.3} | {:.4} | {:.3} | {:.3} | {} | {} | {ratio} |\n",
-                f.sketch, f.shapes, f.first_ms, f.median_ms, f.p99_ms, f.worst_ms, f.flipped, f.short
+                f.sketch,
+                f.shapes,
+                f.first_ms,
+                f.median_ms,
+                f.p99_ms,
+                f.worst_ms,
+                f.flipped,
+                f.short
             )
         };
         s.push_str(&line("loci", &r.loci, "1"));

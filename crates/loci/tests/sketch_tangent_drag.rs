@@ -105,7 +105,13 @@ fn circles_touching_from_outside_never_end_up_one_inside_the_other() {
         prevented += st.flips_prevented;
         let sk = drag.sketch();
         let d = dist(sk.point(ca), sk.point(cb));
-        assert!((d - 1.5).abs() < 1e-7, "step {k}: centres {d} apart, {st:?}");
+        assert!(
+            (d - 1.5).abs() < 1e-7,
+            "step {k}: centres {d} apart, {st:?}"
+        );
     }
-    assert!(prevented > 0, "the path would have put one circle inside the other");
+    assert!(
+        prevented > 0,
+        "the path would have put one circle inside the other"
+    );
 }

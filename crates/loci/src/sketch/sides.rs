@@ -22,7 +22,10 @@ pub(super) enum RoundIx {
     /// A circle: its centre and its radius parameter.
     Circle { center: [usize; 2], radius: usize },
     /// An arc: its centre and its start point (the radius is their distance).
-    Arc { center: [usize; 2], start: [usize; 2] },
+    Arc {
+        center: [usize; 2],
+        start: [usize; 2],
+    },
 }
 
 impl RoundIx {
@@ -45,14 +48,20 @@ impl RoundIx {
 #[derive(Clone, Copy, Debug)]
 pub(super) enum Side {
     /// A line's two ends and a circle tangent to it.
-    LineCircle { line: [[usize; 2]; 2], round: RoundIx },
+    LineCircle {
+        line: [[usize; 2]; 2],
+        round: RoundIx,
+    },
     /// A line's two ends and an arc's centre and the end tangent to it.
     LineArc {
         line: [[usize; 2]; 2],
         arc: [[usize; 2]; 2],
     },
     /// Two arcs' centres and their tangent ends.
-    ArcArc { a: [[usize; 2]; 2], b: [[usize; 2]; 2] },
+    ArcArc {
+        a: [[usize; 2]; 2],
+        b: [[usize; 2]; 2],
+    },
     /// Two tangent circles (or a circle and an arc).
     RoundRound { a: RoundIx, b: RoundIx },
 }
