@@ -271,3 +271,64 @@ pub fn table(rows: &[Row]) -> String {
     }
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn figures(median_ms: f64) -> DragFigures {
+        DragFigures {
+            sketch: "hinged triangles",
+            shapes: 96,
+            steps: 600,
+            first_ms: 0.1,
+            median_ms,
+            p99_ms: 0.5,
+            worst_ms: 1.0,
+            flipped: 0,
+            short: 0,
+        }
+    }
+
+    #[test]
+    fn peers_not_installed_are_skipped_with_the_reason() {
+        let empty = std::env::temp_dir().join(format!("loci-drag-empty-{}", std::process::id()));
+        std::fs::create_dir_all(&empty).unwrap();
+        for peer in Peer::ALL {
+            let run = run_peer(
+                peer,
+                &empty,
+                "hinged triangles",
+                100,
+                10,
+                Duration::from_secs(5),
+            );
+            let PeerRun::Skipped(why) = run else {
+                panic!("{peer:?} ran without being installed");
+            };
+            assert!(
+                why.contains(".venv") || why.contains("not installed") || why.contains("node"),
+                "{peer:?}: {why}"
+            );
+        }
+        let _ = std::fs::remove_dir(&empty);
+    }
+
+    #[test]
+    fn the_table_gives_each_peer_its_ratio_and_lists_the_skipped() {
+        let rows = [Row {
+            loci: figures(0.02),
+            peers: vec![
+                (Peer::SolveSpace, PeerRun::Ran(figures(0.5))),
+                (Peer::PlaneGcs, PeerRun::Skipped("no node on PATH".into())),
+            ],
+        }];
+        let t = table(&rows);
+        assert!(t.contains("| hinged triangles | 96 | SolveSpace |"), "{t}");
+        assert!(t.contains("| ×25 |"), "{t}");
+        assert!(
+            t.contains("- PlaneGCS on hinged triangles (96 shapes): skipped, no node on PATH"),
+            "{t}"
+        );
+    }
+}
