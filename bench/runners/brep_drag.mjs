@@ -117,4 +117,5 @@ for (const [x, y] of path) {
 }
 const rest = times.slice(1).sort((a, b) => a - b);
 console.log(JSON.stringify({ sketch: kind, shapes, steps, first_ms: times[0], median_ms: rest[Math.floor(rest.length / 2)],
+  p99_ms: rest[Math.floor((rest.length * 99) / 100)],
   worst_ms: rest[rest.length - 1], flipped, failed, worst_length_error: worstErr }));

@@ -11,6 +11,7 @@ pub mod assembly_brep;
 pub mod check;
 pub mod compare;
 pub mod drag;
+pub mod drag_peers;
 pub mod generate;
 pub mod peers;
 pub mod problem;

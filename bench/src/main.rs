@@ -7,7 +7,8 @@
 //! loci-bench emit FAMILY VARIANT SIZE DIR
 //! loci-bench report DIR
 //! loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only]
-//! loci-bench drag [SIZES [STEPS]]     (sizes as 100,1000,10000; 600 steps)
+//! loci-bench drag [SIZES [STEPS]] [--long] [--peers slvs,planegcs,brep|none] [--peer-limit S]
+//!                                     (sizes as 100,1000,10000; 600 steps)
 //! ```
 
 use anyhow::{bail, Context, Result};
@@ -345,20 +346,71 @@ fn assembly(args: &[String]) -> Result<()> {
     Ok(())
 }
 
-/// `loci-bench drag [SIZES [STEPS]]`: the drag benchmark, printed as a markdown table.
+/// `loci-bench drag [SIZES [STEPS]] [--long] [--peers slvs,planegcs,brep|none]
+/// [--peer-limit SECONDS]`: the drag benchmark, loci and the peers that are installed on the
+/// same sketches and path, printed as one markdown table. Peers run at 100 shapes only unless
+/// `--long` (at 1,000 shapes and more a peer's run takes minutes); each run stops at the limit
+/// (180 s, or 600 s with `--long`).
 fn drag(args: &[String]) -> Result<()> {
-    let sizes: Vec<usize> = match args.first() {
+    use loci_bench::drag_peers::{run_peer, Peer, PeerRun, Row};
+    let mut positional = Vec::new();
+    let mut long = false;
+    let mut peers: Vec<Peer> = Peer::ALL.to_vec();
+    let mut limit: Option<f64> = None;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--long" => long = true,
+            "--peers" => {
+                let v = it.next().context("--peers needs a list")?;
+                peers = Vec::new();
+                for k in v.split(',').filter(|k| *k != "none" && !k.is_empty()) {
+                    let p = Peer::ALL
+                        .into_iter()
+                        .find(|p| p.key() == k)
+                        .with_context(|| format!("unknown peer {k} (slvs, planegcs, brep)"))?;
+                    peers.push(p);
+                }
+            }
+            "--peer-limit" => {
+                let v = it.next().context("--peer-limit needs seconds")?;
+                limit = Some(v.parse().context("--peer-limit is a number of seconds")?);
+            }
+            _ => positional.push(a.clone()),
+        }
+    }
+    let sizes: Vec<usize> = match positional.first() {
         Some(s) => s
             .split(',')
             .map(|n| n.parse().with_context(|| format!("bad size {n}")))
             .collect::<Result<_>>()?,
         None => vec![100, 1000, 10_000],
     };
-    let steps: usize = match args.get(1) {
+    let steps: usize = match positional.get(1) {
         Some(s) => s.parse().context("steps is a number")?,
         None => 600,
     };
-    let figures = loci_bench::drag::drag_benchmark(&sizes, steps.max(2));
-    print!("{}", loci_bench::drag::drag_table(&figures));
+    let steps = steps.max(2);
+    let limit = Duration::from_secs_f64(limit.unwrap_or(if long { 600.0 } else { 180.0 }));
+    let bench = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut rows = Vec::new();
+    for &n in &sizes {
+        for loci in loci_bench::drag::drag_benchmark(&[n], steps) {
+            let peers = peers
+                .iter()
+                .map(|&p| {
+                    let run = if n > 100 && !long {
+                        PeerRun::Skipped("above 100 shapes peers run only with --long".into())
+                    } else {
+                        eprintln!("loci-bench drag: {} on {} ({n})", p.name(), loci.sketch);
+                        run_peer(p, bench, loci.sketch, n, steps, limit)
+                    };
+                    (p, run)
+                })
+                .collect();
+            rows.push(Row { loci, peers });
+        }
+    }
+    print!("{}", loci_bench::drag_peers::table(&rows));
     Ok(())
 }

@@ -4,9 +4,11 @@
 //! A [`Drag`] writes the soft constraints once and keeps one [`Solver`]: consecutive steps
 //! change values only, so they reuse the compiled equations, ordering and factorisation,
 //! and components the drag does not touch are not solved. After each step the orientation
-//! of every triangle of lines and the direction of every arc is compared with before; a step
-//! that would turn one over (or that fails) is undone and taken in shorter pieces.
+//! of every triangle of lines, the direction of every arc and the side of every tangency
+//! (see [`super::sides`]) is compared with before; a step that would turn one over (or that
+//! fails) is undone and taken in shorter pieces.
 
+use super::sides::Side;
 use super::soft::SoftRec;
 use super::{ArcId, PointId, ShapeId, ShapeKind, Sketch, SketchError, Spec};
 use crate::solve::{Outcome, Solver};
@@ -30,7 +32,7 @@ pub struct DragStep {
     pub pieces: usize,
     /// Pieces undone because they failed or would have flipped something.
     pub refused: usize,
-    /// Pieces undone because they would have flipped a triangle or an arc.
+    /// Pieces undone because they would have flipped a triangle, an arc or a tangent side.
     pub flips_prevented: usize,
     /// Where the dragged shape's grip ended.
     pub at: [f64; 2],
@@ -50,6 +52,8 @@ pub struct Drag<'a> {
     triangles: Vec<[[usize; 2]; 3]>,
     /// Positions of the coordinates of each arc's centre, start and end.
     arcs: Vec<[[usize; 2]; 3]>,
+    /// Tangencies whose side (of a line, or outside/inside another round) is kept.
+    sides: Vec<Side>,
     /// Fixed points' coordinates: parameters, positions and values.
     fixed: Vec<(crate::ParamId, usize, f64)>,
     /// The system revision the solver compiled, once it has.
@@ -87,6 +91,7 @@ impl Sketch {
             .filter(|(_, k)| *k == ShapeKind::Arc)
             .map(|(s, _)| self.arc_points(ArcId(s.0)).map(ix))
             .collect();
+        let sides = self.tangent_sides();
         let grip_ix = match self.kind(shape) {
             Some(ShapeKind::Circle | ShapeKind::Arc) => vec![ix(points[0])],
             _ => points.iter().map(|p| ix(*p)).collect(),
@@ -109,6 +114,7 @@ impl Sketch {
             grip_ix,
             triangles,
             arcs,
+            sides,
             fixed,
             compiled: None,
         })
@@ -300,11 +306,17 @@ impl Drag<'_> {
         Ok((report.outcome, flipped))
     }
 
-    /// Signed areas of the triangles and sweeps of the arcs.
+    /// Signed areas of the triangles and signed sides of the tangencies (each must keep its
+    /// sign), and sweeps of the arcs.
     fn orientation(&self) -> (Vec<f64>, Vec<f64>) {
         let v = self.sketch.sys.params();
         let xy = |[i, j]: [usize; 2]| [v[i].val, v[j].val];
-        let tri = self.triangles.iter().map(|t| area(t.map(xy))).collect();
+        let tri = self
+            .triangles
+            .iter()
+            .map(|t| area(t.map(xy)))
+            .chain(self.sides.iter().map(|s| s.measure(v)))
+            .collect();
         let arcs = self
             .arcs
             .iter()
@@ -318,7 +330,8 @@ impl Drag<'_> {
         (tri, arcs)
     }
 
-    /// Whether a triangle turned over or an arc's sweep jumped across a full turn.
+    /// Whether a triangle turned over, a tangency changed sides or an arc's sweep jumped
+    /// across a full turn.
     fn flipped(&self, before: &(Vec<f64>, Vec<f64>)) -> bool {
         let now = self.orientation();
         let tri = before.0.iter().zip(&now.0).any(|(a, b)| {

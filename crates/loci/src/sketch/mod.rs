@@ -31,6 +31,7 @@ mod error;
 mod ids;
 mod measure;
 mod shapes;
+mod sides;
 mod soft;
 mod spec;
 

@@ -481,6 +481,14 @@ impl Sketch {
         }
     }
 
+    /// The position of a circle's radius in the parameter vector.
+    pub(crate) fn circle_radius_index(&self, c: CircleId) -> usize {
+        match &self.shapes[&c.0].geometry {
+            Geometry::Circle { ix, .. } => *ix,
+            _ => unreachable!("a circle handle names a circle"),
+        }
+    }
+
     /// The radius of a circle or arc.
     pub(crate) fn radius_of(&self, shape: EntityId) -> f64 {
         match &self.shapes[&shape].geometry {
