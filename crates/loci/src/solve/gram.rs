@@ -648,12 +648,19 @@ mod tests {
     fn truss(n: usize, extra: bool) -> (usize, Columns, Vec<Vec<(usize, f64)>>) {
         let mut seed = 0x5eed_u64;
         let mut jitter = || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 5.0
         };
         let at = |i: usize, j: usize| j * n + i;
         let pts: Vec<[f64; 2]> = (0..n * n)
-            .map(|k| [10.0 * (k % n) as f64 + jitter(), 10.0 * (k / n) as f64 + jitter()])
+            .map(|k| {
+                [
+                    10.0 * (k % n) as f64 + jitter(),
+                    10.0 * (k / n) as f64 + jitter(),
+                ]
+            })
             .collect();
         let mut bars = Vec::new();
         for j in 0..n {
