@@ -5,21 +5,7 @@ use loci::{Constraint, ConstraintKind as K, Entity, ModelError, ObjectId, Param,
 
 fn two_points_and_a_line() -> System {
     let mut sys = System::new();
-    for (h, v) in [
-        (1, 0.0),
-        (2, 0.0),
-        (3, 0.0),
-        (4, 1.0),
-        (5, 0.0),
-        (6, 0.0),
-        (7, 0.0),
-    ] {
-        sys.add_param(Param::new(h, 1, v)).unwrap();
-    }
-    sys.add_entity(Entity::point_3d(101, 1, [1, 2, 3])).unwrap();
-    sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7]))
-        .unwrap();
-    sys.add_entity(Entity::workplane(200, 1, 101, 102)).unwrap();
+    sys.add_xy_workplane(1, 1, [101, 102, 200]).unwrap();
     for (h, v) in [(11, 0.0), (12, 0.0), (13, 3.0), (14, 4.0)] {
         sys.add_param(Param::new(h, 2, v)).unwrap();
     }

@@ -325,21 +325,7 @@ fn a_sketch_in_3d_is_drawn_isometric_with_finite_numbers() {
 fn degenerate_sketches_draw_without_panics_or_nan() {
     // Everything at one point, a zero radius, a group with nothing in it.
     let mut sys = System::new();
-    for (h, v) in [
-        (1, 0.0),
-        (2, 0.0),
-        (3, 0.0),
-        (4, 1.0),
-        (5, 0.0),
-        (6, 0.0),
-        (7, 0.0),
-    ] {
-        sys.add_param(Param::new(h, 1, v)).unwrap();
-    }
-    sys.add_entity(Entity::point_3d(101, 1, [1, 2, 3])).unwrap();
-    sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7]))
-        .unwrap();
-    sys.add_entity(Entity::workplane(200, 1, 101, 102)).unwrap();
+    sys.add_xy_workplane(1, 1, [101, 102, 200]).unwrap();
     for h in 11..=17 {
         sys.add_param(Param::new(h, 2, 0.0)).unwrap();
     }
@@ -396,21 +382,7 @@ fn degenerate_sketches_draw_without_panics_or_nan() {
 /// (supplementary with `other`).
 fn vee(degrees: f64, other: bool) -> System {
     let mut sys = System::new();
-    for (h, v) in [
-        (1, 0.0),
-        (2, 0.0),
-        (3, 0.0),
-        (4, 1.0),
-        (5, 0.0),
-        (6, 0.0),
-        (7, 0.0),
-    ] {
-        sys.add_param(Param::new(h, 1, v)).unwrap();
-    }
-    sys.add_entity(Entity::point_3d(101, 1, [1, 2, 3])).unwrap();
-    sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7]))
-        .unwrap();
-    sys.add_entity(Entity::workplane(200, 1, 101, 102)).unwrap();
+    sys.add_xy_workplane(1, 1, [101, 102, 200]).unwrap();
     let (c, s) = (60f64.to_radians().cos(), 60f64.to_radians().sin());
     for (h, v) in [
         (11, 0.0),

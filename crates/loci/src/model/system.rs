@@ -123,6 +123,82 @@ impl System {
         Ok(p.h)
     }
 
+    /// Adds the xy plane as a workplane in `group`, the setup every 2D sketch of the SolveSpace
+    /// model starts with: the origin (0, 0, 0) and the identity quaternion (1, 0, 0, 0) in the
+    /// seven parameters `first_param..=first_param + 6`, then the origin point
+    /// `entities[0]`, the normal `entities[1]` and the workplane `entities[2]`, whose handle
+    /// it returns.
+    ///
+    /// ```
+    /// # use loci::System;
+    /// let mut sys = System::new();
+    /// let wp = sys.add_xy_workplane(1, 1, [101, 102, 200])?;
+    /// assert_eq!((wp.0, sys.params().len(), sys.entities().len()), (200, 7, 3));
+    /// # Ok::<(), loci::ModelError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// A zero or repeated handle (nothing is added then), as [`System::add_param`] and
+    /// [`System::add_entity`] say.
+    pub fn add_xy_workplane(
+        &mut self,
+        group: u32,
+        first_param: u32,
+        entities: [u32; 3],
+    ) -> Result<EntityId, ModelError> {
+        let params: Vec<u32> = (0..7)
+            .map(|i| first_param.checked_add(i))
+            .collect::<Option<_>>()
+            .ok_or(ModelError::ZeroHandle {
+                what: "param",
+                index: self.params.len(),
+            })?;
+        // Check every handle first, so that a failure leaves the system as it was.
+        for &h in &params {
+            if h == 0 {
+                return Err(ModelError::ZeroHandle {
+                    what: "param",
+                    index: self.params.len(),
+                });
+            }
+            if self.param_ix.contains(h) {
+                return Err(ModelError::DuplicateHandle {
+                    object: ObjectId::Param(ParamId(h)),
+                });
+            }
+        }
+        for (i, &h) in entities.iter().enumerate() {
+            if h == 0 {
+                return Err(ModelError::ZeroHandle {
+                    what: "entity",
+                    index: self.entities.len() + i,
+                });
+            }
+            if self.entity(EntityId(h)).is_some() || entities[..i].contains(&h) {
+                return Err(ModelError::DuplicateHandle {
+                    object: ObjectId::Entity(EntityId(h)),
+                });
+            }
+        }
+        let values = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0];
+        for (&h, v) in params.iter().zip(values) {
+            self.add_param(Param::new(h, group, v))?;
+        }
+        let p = |i: usize| params[i];
+        self.add_entity(Entity::point_3d(entities[0], group, [p(0), p(1), p(2)]))?;
+        self.add_entity(Entity::normal_3d(
+            entities[1],
+            group,
+            [p(3), p(4), p(5), p(6)],
+        ))?;
+        self.add_entity(Entity::workplane(
+            entities[2],
+            group,
+            entities[0],
+            entities[1],
+        ))
+    }
+
     /// Adds an entity. Its references are checked by [`System::validate`].
     ///
     /// # Errors

@@ -21,21 +21,7 @@ impl Sketch {
     /// [`WP`].
     pub fn new() -> Self {
         let mut sys = System::new();
-        for (h, v) in [
-            (1, 0.0),
-            (2, 0.0),
-            (3, 0.0),
-            (4, 1.0),
-            (5, 0.0),
-            (6, 0.0),
-            (7, 0.0),
-        ] {
-            sys.add_param(Param::new(h, 1, v)).unwrap();
-        }
-        sys.add_entity(Entity::point_3d(101, 1, [1, 2, 3])).unwrap();
-        sys.add_entity(Entity::normal_3d(102, 1, [4, 5, 6, 7]))
-            .unwrap();
-        sys.add_entity(Entity::workplane(WP, 1, 101, 102)).unwrap();
+        sys.add_xy_workplane(1, 1, [101, 102, WP]).unwrap();
         Self {
             sys,
             next_param: 1000,
