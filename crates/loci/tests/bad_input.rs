@@ -1287,3 +1287,20 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_workplane_whose_handles_are_taken_adds_nothing() {
+    let mut sys = System::new();
+    sys.add_param(Param::new(3, 1, 5.0)).unwrap();
+    let e = sys.add_xy_workplane(1, 1, [101, 102, 200]).unwrap_err();
+    assert!(e.to_string().contains('3'), "{e}");
+    assert_eq!((sys.params().len(), sys.entities().len()), (1, 0));
+    // An entity handle used twice is refused the same way.
+    assert!(sys.add_xy_workplane(1, 11, [101, 101, 200]).is_err());
+    assert_eq!((sys.params().len(), sys.entities().len()), (1, 0));
+    // Free handles: the xy plane, its normal the identity quaternion.
+    let wp = sys.add_xy_workplane(1, 11, [101, 102, 200]).unwrap();
+    assert_eq!(wp.0, 200);
+    let vals: Vec<f64> = (11..=17).map(|h| sys.value(h.into()).unwrap()).collect();
+    assert_eq!(vals, [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0]);
+}
