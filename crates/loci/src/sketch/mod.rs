@@ -90,25 +90,13 @@ impl Sketch {
     pub fn new() -> Self {
         let mut sys = System::new();
         let g = Self::WORKPLANE_GROUP.0;
-        // Origin, normal (identity quaternion), and the two ends of the x axis.
-        for (h, v) in [
-            (1, 0.0),
-            (2, 0.0),
-            (3, 0.0),
-            (4, 1.0),
-            (5, 0.0),
-            (6, 0.0),
-            (7, 0.0),
-        ] {
-            sys.add_param(Param::new(h, g, v)).expect("fresh handle");
-        }
+        // Origin and normal (identity quaternion) in params 1..=7, then the two ends of the x axis.
+        sys.add_xy_workplane(g, 1, [1, 2, WORKPLANE.0])
+            .expect("fresh handles");
         for (h, v) in [(8, 0.0), (9, 0.0), (10, 1.0), (11, 0.0)] {
             sys.add_param(Param::new(h, g, v)).expect("fresh handle");
         }
         for e in [
-            Entity::point_3d(1, g, [1, 2, 3]),
-            Entity::normal_3d(2, g, [4, 5, 6, 7]),
-            Entity::workplane(WORKPLANE.0, g, 1, 2),
             Entity::normal_2d(NORMAL_2D.0, g, WORKPLANE.0),
             Entity::point_2d(5, g, WORKPLANE.0, [8, 9]),
             Entity::point_2d(6, g, WORKPLANE.0, [10, 11]),
