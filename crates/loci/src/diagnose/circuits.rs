@@ -36,12 +36,20 @@ impl Rank {
         if eqs.rows == 0 {
             return None;
         }
-        let mut gram = Gram::new(eqs.rows, &Columns::from_lists(&eqs.columns))?;
+        let columns = Columns::from_lists(&eqs.columns);
+        let mut gram = Gram::new(eqs.rows, &columns)?;
         gram.assemble(&lin.jn);
         if !gram.factor(0.0, cfg.rank_tolerance) {
             return None;
         }
-        let dropped = gram.dropped();
+        // At a solution the rank is checked where rounding could hide a dependence, as the
+        // solver checks it; where the solve stopped short, near-dependence is the conflict
+        // itself and is left to the circuits and their verification.
+        let dropped = if lin.r.iter().all(|v| v.abs() <= cfg.tolerance) {
+            crate::solve::rank::reveal(&mut gram, &columns, &lin.jn, cfg.rank_tolerance)
+        } else {
+            gram.dropped()
+        };
         Some(Self { gram, dropped })
     }
 

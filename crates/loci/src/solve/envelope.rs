@@ -101,6 +101,19 @@ impl EnvelopeLdlt {
         true
     }
 
+    /// The number of rows.
+    pub fn rows(&self) -> usize {
+        self.first.len()
+    }
+
+    /// The smallest pivot the last factorisation kept (infinity when it kept none).
+    pub fn smallest_kept_pivot(&self) -> f64 {
+        (0..self.first.len())
+            .filter(|&i| self.dinv[i] != 0.0)
+            .map(|i| self.l[self.ptr[i + 1] - 1])
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// The rows whose pivots were dropped in the last factorisation, ascending.
     pub fn dropped(&self) -> Vec<usize> {
         (0..self.first.len())

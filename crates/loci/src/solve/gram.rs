@@ -285,6 +285,23 @@ impl Gram {
         }
     }
 
+    /// The number of rows (and columns) of `G`.
+    pub fn rows(&self) -> usize {
+        match self {
+            Gram::Banded(b) => b.g.rows(),
+            Gram::Sparse(s) => s.n,
+        }
+    }
+
+    /// The smallest pivot the last factorisation kept (infinity when it kept none): the
+    /// squared distance of the least independent kept row from the rows before it.
+    pub fn smallest_kept_pivot(&self) -> f64 {
+        match self {
+            Gram::Banded(b) => b.g.smallest_kept_pivot(),
+            Gram::Sparse(s) => s.smallest_kept_pivot(),
+        }
+    }
+
     /// The rows whose pivots were dropped in the last factorisation, ascending.
     pub fn dropped(&self) -> Vec<usize> {
         match self {
@@ -575,14 +592,31 @@ impl SparseGram {
     /// The rows whose pivots were dropped in the last factorisation, ascending.
     pub fn dropped(&self) -> Vec<usize> {
         let mut out = Vec::new();
-        let mut keep = |k: usize, d: f64| {
+        self.each_pivot(|k, d| {
             if d >= DROPPED {
                 out.push(match self.symbolic.perm() {
                     Some(p) => p.arrays().0[k],
                     None => k,
                 });
             }
-        };
+        });
+        out.sort_unstable();
+        out
+    }
+
+    /// The smallest pivot the last factorisation kept (infinity when it kept none).
+    pub fn smallest_kept_pivot(&self) -> f64 {
+        let mut least = f64::INFINITY;
+        self.each_pivot(|_, d| {
+            if d < DROPPED {
+                least = least.min(d);
+            }
+        });
+        least
+    }
+
+    /// Calls `keep(k, d)` with the pivot `d` of each position `k` of the ordering.
+    fn each_pivot(&self, mut keep: impl FnMut(usize, f64)) {
         match self.symbolic.raw() {
             SymbolicCholeskyRaw::Simplicial(s) => {
                 // D is the first entry of each column.
@@ -606,8 +640,6 @@ impl SparseGram {
                 }
             }
         }
-        out.sort_unstable();
-        out
     }
 
     /// Whether the factorisation works in dense blocks of columns.

@@ -18,6 +18,7 @@ pub(crate) mod gram;
 pub(crate) mod newton;
 mod order;
 mod plan;
+pub(crate) mod rank;
 mod report;
 mod substitute;
 

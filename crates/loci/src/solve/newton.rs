@@ -2,6 +2,7 @@
 //! with a backtracking line search as the safety net.
 
 use super::gram::{Columns, Gram};
+use super::rank;
 use super::Config;
 use crate::equations::Kernel;
 use crate::equations::Rows;
@@ -812,9 +813,15 @@ impl Component {
         };
         self.gram = gram_slot;
         if let (Some(gram), true) = (self.gram.as_mut(), factored) {
-            fin.dropped = gram.dropped();
+            // At a solution, the rank is checked where rounding could hide a dependence; where
+            // the solve stopped short, near-dependence is the conflict itself.
+            fin.dropped = if converged {
+                rank::reveal(gram, &self.columns, jn, cfg.rank_tolerance)
+            } else {
+                gram.dropped()
+            };
             if cfg.find_failed {
-                fin.dependencies = dependencies(gram, &self.columns, jn, &fin.dropped, m);
+                fin.dependencies = rank::dependencies(gram, &self.columns, jn, &fin.dropped, m);
             }
         } else {
             // No factorisation: count every row as unresolved.
@@ -826,7 +833,7 @@ impl Component {
 
 /// A number in [-1, -0.5] or [0.5, 1] that depends only on `c` and `attempt`: directions of
 /// nudges that are reproducible and that no constraint is likely to be singular along.
-fn generic(c: usize, attempt: usize) -> f64 {
+pub(super) fn generic(c: usize, attempt: usize) -> f64 {
     let mut z = (c as u64)
         .wrapping_mul(0x9E37_79B9_7F4A_7C15)
         .wrapping_add((attempt as u64 + 1).wrapping_mul(0xBF58_476D_1CE4_E5B9));
@@ -839,60 +846,4 @@ fn generic(c: usize, attempt: usize) -> f64 {
     } else {
         -m
     }
-}
-
-/// How many dependency right-hand sides are solved together.
-const DEPENDENCY_BLOCK: usize = 32;
-
-/// For each dropped row `k`, the rows that row `k` of the normalised Jacobian is a combination
-/// of: solve `G c = J J_kᵀ`; dropped rows get (almost) nothing, so `c` expresses row `k` in the
-/// others. The right-hand sides are built in one pass over `J` and solved in blocks, since a
-/// mesh of many shared points can drop thousands of implied rows.
-fn dependencies(
-    gram: &mut Gram,
-    columns: &Columns,
-    jn: &[f64],
-    dropped: &[usize],
-    m: usize,
-) -> Vec<Vec<usize>> {
-    // The entries of each dropped row, in column order: (column, index into jn).
-    let mut slot = vec![usize::MAX; m];
-    for (s, &k) in dropped.iter().enumerate() {
-        slot[k] = s;
-    }
-    let mut entries: Vec<Vec<(usize, u32)>> = vec![Vec::new(); dropped.len()];
-    for (c, col) in columns.iter().enumerate() {
-        // The first entry of a row in a column, as a search by row would find it.
-        for &(row, ik) in col {
-            let s = slot[row as usize];
-            if s != usize::MAX && entries[s].last().is_none_or(|&(lc, _)| lc != c) {
-                entries[s].push((c, ik));
-            }
-        }
-    }
-    let mut out = Vec::with_capacity(dropped.len());
-    for (block, ks) in dropped.chunks(DEPENDENCY_BLOCK).enumerate() {
-        let mut b = vec![0.0; m * ks.len()];
-        for (t, rhs) in b.chunks_mut(m.max(1)).enumerate() {
-            for &(c, ik) in &entries[block * DEPENDENCY_BLOCK + t] {
-                let vk = jn[ik as usize];
-                for &(row, idx) in columns.col(c) {
-                    rhs[row as usize] += jn[idx as usize] * vk;
-                }
-            }
-        }
-        gram.solve_many(&mut b, ks.len());
-        for (&k, c) in ks.iter().zip(b.chunks(m.max(1))) {
-            let mut deps = vec![k];
-            deps.extend(
-                c.iter()
-                    .enumerate()
-                    .filter(|&(i, c)| i != k && c.abs() > 1e-6)
-                    .map(|(i, _)| i),
-            );
-            deps.sort_unstable();
-            out.push(deps);
-        }
-    }
-    out
 }

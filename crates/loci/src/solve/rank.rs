@@ -1,0 +1,196 @@
+//! Which rows of the normalised Jacobian depend on which: the rank the factorisation of
+//! `G = J Jᵀ` reveals, checked where rounding could have hidden a dependence, and the rows on
+//! the circuits of the dependent ones (the constraints a solve names as redundant or
+//! conflicting).
+
+use super::gram::{Columns, Gram};
+use super::newton::generic;
+
+/// Kept pivots up to this multiple of the rank tolerance are looked at again by [`reveal`].
+const SUSPECT: f64 = 1e4;
+
+/// The rows dependent on the others at a solution, from `gram` factorised (at `lambda = 0`)
+/// with the rank tolerance `eps` from the normalised Jacobian values `jn`.
+///
+/// A pivot is the squared distance of its row from the span of the rows eliminated before it,
+/// but only in exact arithmetic: after thousands of dependent rows (a mesh of shared points
+/// implies a distance per triangle), the pivot of a dependent row eliminated late carries
+/// rounding amplified by the small pivots of nearly dependent rows before it, and can land
+/// above `eps` (a pinned mesh then loses its rotation: DOF 0 for 1). So when a kept pivot is
+/// within [`SUSPECT`] of `eps`, `G` is factorised again with the wider tolerance, and each row
+/// that only the wider one drops is measured directly in the Jacobian, `‖J_kᵀ - Jᵀ c‖²` with
+/// `G c = J J_kᵀ`, where rounding is not squared. Rows within `eps` there are dependent; when
+/// every such row is, the wider factorisation stands, otherwise `G` is factorised with `eps`
+/// again and the confirmed rows are added to its dropped ones. `gram` is left factorised.
+pub(crate) fn reveal(gram: &mut Gram, columns: &Columns, jn: &[f64], eps: f64) -> Vec<usize> {
+    let base = gram.dropped();
+    let wide = eps * SUSPECT;
+    if !(gram.smallest_kept_pivot() <= wide) {
+        return base;
+    }
+    if !gram.factor(0.0, wide) {
+        gram.factor(0.0, eps);
+        return base;
+    }
+    let widened = gram.dropped();
+    let m = gram.rows();
+    let suspects: Vec<usize> = widened
+        .iter()
+        .copied()
+        .filter(|k| base.binary_search(k).is_err())
+        .collect();
+    let entries = row_entries(columns, &suspects, m);
+    let mut confirmed = Vec::with_capacity(suspects.len());
+    for (block, ks) in suspects.chunks(DEPENDENCY_BLOCK).enumerate() {
+        let mut b = vec![0.0; m * ks.len()];
+        for (t, rhs) in b.chunks_mut(m.max(1)).enumerate() {
+            gram_column(columns, jn, &entries[block * DEPENDENCY_BLOCK + t], rhs);
+        }
+        gram.solve_many(&mut b, ks.len());
+        for (&k, c) in ks.iter().zip(b.chunks_mut(m.max(1))) {
+            c[k] = -1.0;
+            // J_kᵀ - Jᵀ c, column by column, with c_k = -1 standing for row k itself.
+            let dist2: f64 = (0..columns.len())
+                .map(|col| {
+                    let s: f64 = columns
+                        .col(col)
+                        .iter()
+                        .map(|&(row, idx)| c[row as usize] * jn[idx as usize])
+                        .sum();
+                    s * s
+                })
+                .sum();
+            if dist2 <= eps {
+                confirmed.push(k);
+            }
+        }
+    }
+    if confirmed.len() == suspects.len() {
+        return widened;
+    }
+    gram.factor(0.0, eps);
+    let mut out = base;
+    out.extend(confirmed);
+    out.sort_unstable();
+    out
+}
+
+/// `rhs = J J_kᵀ` for the row with `entries` (column, index into `jn`).
+fn gram_column(columns: &Columns, jn: &[f64], entries: &[(usize, u32)], rhs: &mut [f64]) {
+    for &(c, ik) in entries {
+        let vk = jn[ik as usize];
+        for &(row, idx) in columns.col(c) {
+            rhs[row as usize] += jn[idx as usize] * vk;
+        }
+    }
+}
+
+/// The entries of each of `rows` (of `m`), in column order: (column, index into `jn`). Only
+/// the first entry of a row in a column is listed, as a search by row would find it.
+fn row_entries(columns: &Columns, rows: &[usize], m: usize) -> Vec<Vec<(usize, u32)>> {
+    let mut slot = vec![usize::MAX; m];
+    for (s, &k) in rows.iter().enumerate() {
+        slot[k] = s;
+    }
+    let mut entries: Vec<Vec<(usize, u32)>> = vec![Vec::new(); rows.len()];
+    for (c, col) in columns.iter().enumerate() {
+        for &(row, ik) in col {
+            let s = slot[row as usize];
+            if s != usize::MAX && entries[s].last().is_none_or(|&(lc, _)| lc != c) {
+                entries[s].push((c, ik));
+            }
+        }
+    }
+    entries
+}
+
+/// How many dependency right-hand sides are solved together.
+const DEPENDENCY_BLOCK: usize = 32;
+
+/// For each dropped row `k`, the rows that row `k` of the normalised Jacobian is a combination
+/// of: solve `G c = J J_kᵀ`; dropped rows get (almost) nothing, so `c` expresses row `k` in the
+/// others. The right-hand sides are built in one pass over `J` and solved in blocks, since a
+/// mesh of many shared points can drop thousands of implied rows.
+pub(crate) fn dependencies(
+    gram: &mut Gram,
+    columns: &Columns,
+    jn: &[f64],
+    dropped: &[usize],
+    m: usize,
+) -> Vec<Vec<usize>> {
+    let entries = row_entries(columns, dropped, m);
+    if dropped.len() > DEPENDENCY_BLOCK {
+        return vec![dependent_union(gram, columns, jn, &entries, dropped, m)];
+    }
+    let mut out = Vec::with_capacity(dropped.len());
+    for (block, ks) in dropped.chunks(DEPENDENCY_BLOCK).enumerate() {
+        let mut b = vec![0.0; m * ks.len()];
+        for (t, rhs) in b.chunks_mut(m.max(1)).enumerate() {
+            gram_column(columns, jn, &entries[block * DEPENDENCY_BLOCK + t], rhs);
+        }
+        gram.solve_many(&mut b, ks.len());
+        for (&k, c) in ks.iter().zip(b.chunks(m.max(1))) {
+            let mut deps = vec![k];
+            deps.extend(
+                c.iter()
+                    .enumerate()
+                    .filter(|&(i, c)| i != k && c.abs() > 1e-6)
+                    .map(|(i, _)| i),
+            );
+            deps.sort_unstable();
+            out.push(deps);
+        }
+    }
+    out
+}
+
+/// How many random combinations of the dropped rows [`dependent_union`] solves for.
+const UNION_PROBES: usize = 3;
+
+/// The rows on some circuit through a dropped row, when there are too many dropped rows to
+/// find each one's circuit (a mesh of shared points drops thousands of implied rows, and one
+/// solve each grows as the square of the mesh). Only the union is reported, and it is the
+/// support of the left null space of `J`: a generic combination `y = Σ w_k (e_k - c_k)` of the
+/// dependencies has exactly that support, so a few such combinations, with weights fixed by
+/// [`generic`], cost a few solves in all. A coefficient cancels to below the threshold only
+/// where the weights happen to balance it out in every probe.
+fn dependent_union(
+    gram: &mut Gram,
+    columns: &Columns,
+    jn: &[f64],
+    entries: &[Vec<(usize, u32)>],
+    dropped: &[usize],
+    m: usize,
+) -> Vec<usize> {
+    let mut b = vec![0.0; m * UNION_PROBES];
+    for (p, rhs) in b.chunks_mut(m.max(1)).enumerate() {
+        // v = Σ w_k J_kᵀ over the columns, then rhs = J v.
+        let mut v = vec![0.0; columns.len()];
+        for (s, &k) in dropped.iter().enumerate() {
+            let w = generic(k, p);
+            for &(c, ik) in &entries[s] {
+                v[c] += w * jn[ik as usize];
+            }
+        }
+        for (c, &vc) in v.iter().enumerate() {
+            if vc != 0.0 {
+                for &(row, idx) in columns.col(c) {
+                    rhs[row as usize] += jn[idx as usize] * vc;
+                }
+            }
+        }
+    }
+    gram.solve_many(&mut b, UNION_PROBES);
+    let mut on_circuit = vec![false; m];
+    for &k in dropped {
+        on_circuit[k] = true;
+    }
+    for c in b.chunks(m.max(1)) {
+        for (i, v) in c.iter().enumerate() {
+            if v.abs() > 1e-6 {
+                on_circuit[i] = true;
+            }
+        }
+    }
+    (0..m).filter(|&i| on_circuit[i]).collect()
+}
