@@ -1,0 +1,45 @@
+//! Python bindings of loci, built by maturin into the extension module `loci._loci`; the
+//! pure-Python package `loci` (in `python/loci`) re-exports it and adds the `loci.slvs`
+//! drop-in for SolveSpace's module.
+//!
+//! Three layers are bound: the SolveSpace model ([`system::PySystem`]), the sketcher
+//! ([`sketch::PySketch`]) and assemblies ([`assembly::PyAssembly`]). Every error crosses the
+//! boundary as a `loci.LociError` subclass; nothing panics into Python; solves release the GIL.
+
+mod assembly;
+mod convert;
+mod errors;
+mod load;
+mod result;
+mod sketch;
+mod system;
+
+use pyo3::prelude::*;
+
+/// The native part of the `loci` package.
+#[pymodule]
+fn _loci(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("LociError", py.get_type::<errors::LociError>())?;
+    m.add("ModelError", py.get_type::<errors::ModelError>())?;
+    m.add("SolveError", py.get_type::<errors::SolveError>())?;
+    m.add("FileError", py.get_type::<errors::FileError>())?;
+    m.add_class::<system::PySystem>()?;
+    m.add_class::<result::SolveResult>()?;
+    m.add_class::<result::CheckResult>()?;
+    m.add_class::<sketch::PySketch>()?;
+    m.add_class::<sketch::Point>()?;
+    m.add_class::<sketch::Line>()?;
+    m.add_class::<sketch::Circle>()?;
+    m.add_class::<sketch::Arc>()?;
+    m.add_class::<sketch::Cubic>()?;
+    m.add_class::<sketch::SketchConstraint>()?;
+    m.add_class::<sketch::SketchResult>()?;
+    m.add_class::<sketch::DragResult>()?;
+    m.add_class::<assembly::PyAssembly>()?;
+    m.add_class::<assembly::AssemblyResult>()?;
+    m.add_function(wrap_pyfunction!(load::load, m)?)?;
+    m.add_function(wrap_pyfunction!(load::loads, m)?)?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}
