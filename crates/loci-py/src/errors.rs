@@ -49,3 +49,8 @@ pub fn solve(e: loci::SolveError) -> PyErr {
 pub fn file(e: impl std::fmt::Display) -> PyErr {
     FileError::new_err(e.to_string())
 }
+
+/// A solve error from a message.
+pub fn solve_msg(msg: String) -> PyErr {
+    SolveError::new_err(msg)
+}

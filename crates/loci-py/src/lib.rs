@@ -12,6 +12,7 @@ mod errors;
 mod load;
 mod result;
 mod sketch;
+mod slvs;
 mod system;
 
 use pyo3::prelude::*;
@@ -38,6 +39,7 @@ fn _loci(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<sketch::DragResult>()?;
     m.add_class::<assembly::PyAssembly>()?;
     m.add_class::<assembly::AssemblyResult>()?;
+    m.add_class::<slvs::SlvsModel>()?;
     m.add_function(wrap_pyfunction!(load::load, m)?)?;
     m.add_function(wrap_pyfunction!(load::loads, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

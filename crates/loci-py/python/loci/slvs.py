@@ -1,0 +1,820 @@
+"""A drop-in for SolveSpace's ``slvs`` Python module (PyPI ``slvs`` 3.3), backed by loci.
+
+A script written for ``slvs`` runs unchanged after ``import loci.slvs as slvs``: the same
+functions with the same arguments, entities and constraints as the same dictionaries, the
+same handles (numbered from 1 for parameters, entities and constraints alike), the same
+``ResultFlag`` values and result fields. As in ``slvs``, there is one sketch per process;
+``clear_sketch()`` empties it.
+
+Differences (see ``docs/python.md``):
+
+* Bad arguments raise :class:`loci.ModelError` (a :class:`loci.LociError`) instead of
+  aborting the interpreter.
+* ``mark_dragged(point)`` works (in ``slvs`` 3.3 it always aborts): the point's parameters
+  move as little as possible in later solves.
+* ``mark_dragged`` takes at most two 2D points (four parameters), as libslvs's arrays do.
+* ``to_system()`` gives the sketch as a :class:`loci.System` (to check or save it).
+"""
+
+from __future__ import annotations
+
+import math
+from enum import IntEnum
+from typing import Dict, List, Set, Tuple, TypedDict, Union
+
+from ._loci import ModelError, SlvsModel, System
+
+__all__ = [
+    "ConstraintType",
+    "EntityType",
+    "ResultFlag",
+    "E_NONE",
+    "E_FREE_IN_3D",
+    "Slvs_Entity",
+    "Slvs_Constraint",
+    "Slvs_SolveResult",
+    "quaternion_u",
+    "quaternion_v",
+    "quaternion_n",
+    "make_quaternion",
+    "add_base_2d",
+    "add_point_2d",
+    "add_point_3d",
+    "add_normal_2d",
+    "add_normal_3d",
+    "add_distance",
+    "add_line_2d",
+    "add_line_3d",
+    "add_cubic",
+    "add_arc",
+    "add_circle",
+    "add_workplane",
+    "add_constraint",
+    "coincident",
+    "distance",
+    "equal",
+    "equal_angle",
+    "equal_point_to_line",
+    "ratio",
+    "symmetric",
+    "symmetric_h",
+    "symmetric_v",
+    "midpoint",
+    "horizontal",
+    "vertical",
+    "diameter",
+    "same_orientation",
+    "angle",
+    "perpendicular",
+    "parallel",
+    "tangent",
+    "distance_proj",
+    "length_diff",
+    "dragged",
+    "mark_dragged",
+    "clear_sketch",
+    "solve_sketch",
+    "get_param_value",
+    "set_param_value",
+    "to_system",
+]
+
+
+class ConstraintType(IntEnum):
+    """The constraint type codes of SolveSpace's library."""
+
+    POINTS_COINCIDENT = 100000
+    PT_PT_DISTANCE = 100001
+    PT_PLANE_DISTANCE = 100002
+    PT_LINE_DISTANCE = 100003
+    PT_FACE_DISTANCE = 100004
+    PT_IN_PLANE = 100005
+    PT_ON_LINE = 100006
+    PT_ON_FACE = 100007
+    EQUAL_LENGTH_LINES = 100008
+    LENGTH_RATIO = 100009
+    EQ_LEN_PT_LINE_D = 100010
+    EQ_PT_LN_DISTANCES = 100011
+    EQUAL_ANGLE = 100012
+    EQUAL_LINE_ARC_LEN = 100013
+    SYMMETRIC = 100014
+    SYMMETRIC_HORIZ = 100015
+    SYMMETRIC_VERT = 100016
+    SYMMETRIC_LINE = 100017
+    AT_MIDPOINT = 100018
+    HORIZONTAL = 100019
+    VERTICAL = 100020
+    DIAMETER = 100021
+    PT_ON_CIRCLE = 100022
+    SAME_ORIENTATION = 100023
+    ANGLE = 100024
+    PARALLEL = 100025
+    PERPENDICULAR = 100026
+    ARC_LINE_TANGENT = 100027
+    CUBIC_LINE_TANGENT = 100028
+    EQUAL_RADIUS = 100029
+    PROJ_PT_DISTANCE = 100030
+    WHERE_DRAGGED = 100031
+    CURVE_CURVE_TANGENT = 100032
+    LENGTH_DIFFERENCE = 100033
+    ARC_ARC_LEN_RATIO = 100034
+    ARC_LINE_LEN_RATIO = 100035
+    ARC_ARC_DIFFERENCE = 100036
+    ARC_LINE_DIFFERENCE = 100037
+
+
+class EntityType(IntEnum):
+    """The entity type codes of SolveSpace's library."""
+
+    POINT_IN_3D = 50000
+    POINT_IN_2D = 50001
+    NORMAL_IN_3D = 60000
+    NORMAL_IN_2D = 60001
+    DISTANCE = 70000
+    WORKPLANE = 80000
+    LINE_SEGMENT = 80001
+    CUBIC = 80002
+    CIRCLE = 80003
+    ARC_OF_CIRCLE = 80004
+
+
+class ResultFlag(IntEnum):
+    """How a solve ended, with SolveSpace's codes."""
+
+    OKAY = 0
+    INCONSISTENT = 1
+    DIDNT_CONVERGE = 2
+    TOO_MANY_UNKNOWNS = 3
+    REDUNDANT_OKAY = 4
+
+
+class Slvs_Entity(TypedDict):
+    """An entity, as ``slvs`` returns it."""
+
+    h: int
+    group: int
+    type: int
+    wrkpl: int
+    point: List[int]
+    normal: int
+    distance: int
+    param: List[int]
+
+
+class Slvs_Constraint(TypedDict):
+    """A constraint, as ``slvs`` returns it."""
+
+    h: int
+    group: int
+    type: int
+    wrkpl: int
+    valA: float
+    ptA: int
+    ptB: int
+    entityA: int
+    entityB: int
+    entityC: int
+    entityD: int
+    other: int
+    other2: int
+
+
+class Slvs_SolveResult(TypedDict):
+    """The result of ``solve_sketch``."""
+
+    result: int
+    dof: int
+    nbad: int
+
+
+def _none_entity() -> Slvs_Entity:
+    return {
+        "h": 0,
+        "group": 0,
+        "type": 0,
+        "wrkpl": 0,
+        "point": [0, 0, 0, 0],
+        "normal": 0,
+        "distance": 0,
+        "param": [0, 0, 0, 0],
+    }
+
+
+E_NONE: Slvs_Entity = _none_entity()
+"""No entity."""
+E_FREE_IN_3D: Slvs_Entity = _none_entity()
+"""No workplane: a constraint free in 3D."""
+
+_P3, _P2 = EntityType.POINT_IN_3D.value, EntityType.POINT_IN_2D.value
+_N3, _N2 = EntityType.NORMAL_IN_3D.value, EntityType.NORMAL_IN_2D.value
+_DIST, _WP = EntityType.DISTANCE.value, EntityType.WORKPLANE.value
+_LINE, _CUBIC = EntityType.LINE_SEGMENT.value, EntityType.CUBIC.value
+_CIRCLE, _ARC = EntityType.CIRCLE.value, EntityType.ARC_OF_CIRCLE.value
+
+# The one sketch of the process, as in slvs: libslvs's arrays, kept natively.
+_m = SlvsModel()
+_dragged: Set[int] = set()
+
+
+def _entity(
+    h: int,
+    group: int,
+    type_: int,
+    wrkpl: int = 0,
+    point: Tuple[int, int, int, int] = (0, 0, 0, 0),
+    normal: int = 0,
+    distance: int = 0,
+    param: Tuple[int, int, int, int] = (0, 0, 0, 0),
+) -> Slvs_Entity:
+    return {
+        "h": h,
+        "group": group,
+        "type": type_,
+        "wrkpl": wrkpl,
+        "point": list(point),
+        "normal": normal,
+        "distance": distance,
+        "param": list(param),
+    }
+
+
+def _is_point(e: Slvs_Entity) -> bool:
+    return e["type"] in (_P3, _P2)
+
+
+def _is_line(e: Slvs_Entity) -> bool:
+    return e["type"] == _LINE
+
+
+def _is_round(e: Slvs_Entity) -> bool:
+    return e["type"] in (_CIRCLE, _ARC)
+
+
+def _is_wp(e: Slvs_Entity) -> bool:
+    return e["type"] == _WP
+
+
+def _free(wp: Slvs_Entity) -> bool:
+    return wp["h"] == 0
+
+
+def _want(ok: bool, what: str) -> None:
+    if not ok:
+        raise ModelError(what)
+
+
+def _want_wp(wp: Slvs_Entity) -> None:
+    _want(_is_wp(wp), f"workplane argument is entity {wp['h']}, not a workplane")
+
+
+def _want_p2(p: Slvs_Entity, name: str) -> None:
+    _want(p["type"] == _P2, f"{name} argument is entity {p['h']}, not a 2d point")
+
+
+# ---------------------------------------------------------------- quaternions
+
+
+def quaternion_u(qw: float, qx: float, qy: float, qz: float) -> Tuple[float, float, float]:
+    """The first basis vector (u) of the frame the quaternion turns the axes into."""
+    return (
+        qw * qw + qx * qx - qy * qy - qz * qz,
+        2.0 * (qw * qz + qx * qy),
+        2.0 * (qx * qz - qw * qy),
+    )
+
+
+def quaternion_v(qw: float, qx: float, qy: float, qz: float) -> Tuple[float, float, float]:
+    """The second basis vector (v) of the frame the quaternion turns the axes into."""
+    return (
+        2.0 * (qx * qy - qw * qz),
+        qw * qw - qx * qx + qy * qy - qz * qz,
+        2.0 * (qw * qx + qy * qz),
+    )
+
+
+def quaternion_n(qw: float, qx: float, qy: float, qz: float) -> Tuple[float, float, float]:
+    """The normal (u x v) of the frame the quaternion turns the axes into."""
+    return (
+        2.0 * (qw * qy + qx * qz),
+        2.0 * (qy * qz - qw * qx),
+        qw * qw - qx * qx - qy * qy + qz * qz,
+    )
+
+
+def make_quaternion(
+    ux: float, uy: float, uz: float, vx: float, vy: float, vz: float
+) -> Tuple[float, float, float, float]:
+    """The unit quaternion (w, x, y, z) turning the x and y axes into ``u`` and ``v``."""
+    nx, ny, nz = uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx
+    t = 1.0 + ux + vy + nz
+    if t > 1e-4:
+        s = 2.0 * math.sqrt(t)
+        q = (s / 4.0, (vz - ny) / s, (nx - uz) / s, (uy - vx) / s)
+    elif ux > vy and ux > nz:
+        s = 2.0 * math.sqrt(1.0 + ux - vy - nz)
+        q = ((vz - ny) / s, s / 4.0, (uy + vx) / s, (nx + uz) / s)
+    elif vy > nz:
+        s = 2.0 * math.sqrt(1.0 - ux + vy - nz)
+        q = ((nx - uz) / s, (uy + vx) / s, s / 4.0, (vz + ny) / s)
+    else:
+        s = 2.0 * math.sqrt(1.0 - ux - vy + nz)
+        q = ((uy - vx) / s, (nx + uz) / s, (vz + ny) / s, s / 4.0)
+    n = math.sqrt(sum(a * a for a in q))
+    return (q[0] / n, q[1] / n, q[2] / n, q[3] / n)
+
+
+# ---------------------------------------------------------------- entities
+
+
+def _add(
+    grouph: int,
+    type_: int,
+    wrkpl: int = 0,
+    point: Tuple[int, int, int, int] = (0, 0, 0, 0),
+    normal: int = 0,
+    distance: int = 0,
+    values: Tuple[float, ...] = (),
+) -> Slvs_Entity:
+    h, param = _m.add_entity(grouph, type_, wrkpl, point, normal, distance, values)
+    return _entity(h, grouph, type_, wrkpl, point, normal, distance, param)
+
+
+def add_point_2d(grouph: int, u: float, v: float, wp: Slvs_Entity) -> Slvs_Entity:
+    """A point at (u, v) in workplane ``wp``."""
+    _want_wp(wp)
+    return _add(grouph, _P2, wp["h"], values=(u, v))
+
+
+def add_point_3d(grouph: int, x: float, y: float, z: float) -> Slvs_Entity:
+    """A point at (x, y, z)."""
+    return _add(grouph, _P3, values=(x, y, z))
+
+
+def add_normal_2d(grouph: int, wp: Slvs_Entity) -> Slvs_Entity:
+    """The normal of workplane ``wp``."""
+    _want_wp(wp)
+    return _add(grouph, _N2, wp["h"])
+
+
+def add_normal_3d(grouph: int, qw: float, qx: float, qy: float, qz: float) -> Slvs_Entity:
+    """An orientation as the unit quaternion (qw, qx, qy, qz)."""
+    return _add(grouph, _N3, values=(qw, qx, qy, qz))
+
+
+def add_distance(grouph: int, d: float, wp: Slvs_Entity) -> Slvs_Entity:
+    """A distance entity (a circle's radius) of value ``d``."""
+    _want_wp(wp)
+    return _add(grouph, _DIST, wp["h"], values=(d,))
+
+
+def add_line_2d(grouph: int, p1: Slvs_Entity, p2: Slvs_Entity, wp: Slvs_Entity) -> Slvs_Entity:
+    """A line segment between two 2D points in ``wp``."""
+    _want_wp(wp)
+    _want_p2(p1, "ptA")
+    _want_p2(p2, "ptB")
+    return _add(grouph, _LINE, wp["h"], (p1["h"], p2["h"], 0, 0))
+
+
+def add_line_3d(grouph: int, p1: Slvs_Entity, p2: Slvs_Entity) -> Slvs_Entity:
+    """A line segment between two 3D points."""
+    _want(p1["type"] == _P3, f"ptA argument is entity {p1['h']}, not a 3d point")
+    _want(p2["type"] == _P3, f"ptB argument is entity {p2['h']}, not a 3d point")
+    return _add(grouph, _LINE, 0, (p1["h"], p2["h"], 0, 0))
+
+
+def add_cubic(
+    grouph: int,
+    p1: Slvs_Entity,
+    p2: Slvs_Entity,
+    p3: Slvs_Entity,
+    p4: Slvs_Entity,
+    wp: Slvs_Entity,
+) -> Slvs_Entity:
+    """A cubic Bezier through four 2D control points in ``wp``."""
+    _want_wp(wp)
+    for p, n in ((p1, "ptA"), (p2, "ptB"), (p3, "ptC"), (p4, "ptD")):
+        _want_p2(p, n)
+    return _add(grouph, _CUBIC, wp["h"], (p1["h"], p2["h"], p3["h"], p4["h"]))
+
+
+def add_arc(
+    grouph: int,
+    nm: Slvs_Entity,
+    ct: Slvs_Entity,
+    start: Slvs_Entity,
+    end: Slvs_Entity,
+    wp: Slvs_Entity,
+) -> Slvs_Entity:
+    """An arc about ``ct``, counter-clockwise from ``start`` to ``end``, in ``wp``."""
+    _want_wp(wp)
+    _want(nm["type"] == _N3, f"normal argument is entity {nm['h']}, not a 3d normal")
+    _want_p2(ct, "center")
+    _want_p2(start, "start")
+    _want_p2(end, "end")
+    return _add(grouph, _ARC, wp["h"], (ct["h"], start["h"], end["h"], 0), nm["h"])
+
+
+def add_circle(
+    grouph: int,
+    nm: Slvs_Entity,
+    ct: Slvs_Entity,
+    radius: Slvs_Entity,
+    wp: Slvs_Entity,
+) -> Slvs_Entity:
+    """A circle about ``ct`` whose radius is the distance entity ``radius``, in ``wp``."""
+    _want_wp(wp)
+    _want(nm["type"] == _N3, f"normal argument is entity {nm['h']}, not a 3d normal")
+    _want_p2(ct, "center")
+    _want(radius["type"] == _DIST, f"radius argument is entity {radius['h']}, not a distance")
+    return _add(grouph, _CIRCLE, wp["h"], (ct["h"], 0, 0, 0), nm["h"], radius["h"])
+
+
+def add_workplane(grouph: int, origin: Slvs_Entity, nm: Slvs_Entity) -> Slvs_Entity:
+    """A workplane through the 3D point ``origin`` oriented by the normal ``nm``."""
+    return _add(grouph, _WP, 0, (origin["h"], 0, 0, 0), nm["h"])
+
+
+def add_base_2d(grouph: int) -> Slvs_Entity:
+    """The xy plane as a workplane in ``grouph`` (normal, origin, then the workplane)."""
+    nm = add_normal_3d(grouph, *make_quaternion(1, 0, 0, 0, 1, 0))
+    return add_workplane(grouph, add_point_3d(grouph, 0, 0, 0), nm)
+
+
+# ---------------------------------------------------------------- constraints
+
+
+def add_constraint(
+    grouph: int,
+    c_type: int,
+    wp: Slvs_Entity,
+    v: float,
+    p1: Slvs_Entity = E_NONE,
+    p2: Slvs_Entity = E_NONE,
+    e1: Slvs_Entity = E_NONE,
+    e2: Slvs_Entity = E_NONE,
+    e3: Slvs_Entity = E_NONE,
+    e4: Slvs_Entity = E_NONE,
+    other: int = 0,
+    other2: int = 0,
+) -> Slvs_Constraint:
+    """A constraint of any type with SolveSpace's fields."""
+    c_type = int(c_type)
+    other, other2 = (1 if other else 0), (1 if other2 else 0)
+    h = _m.add_constraint(
+        grouph,
+        c_type,
+        wp["h"],
+        v,
+        p1["h"],
+        p2["h"],
+        e1["h"],
+        e2["h"],
+        e3["h"],
+        e4["h"],
+        other,
+        other2,
+    )
+    return {
+        "h": h,
+        "group": grouph,
+        "type": c_type,
+        "wrkpl": wp["h"],
+        "valA": float(v),
+        "ptA": p1["h"],
+        "ptB": p2["h"],
+        "entityA": e1["h"],
+        "entityB": e2["h"],
+        "entityC": e3["h"],
+        "entityD": e4["h"],
+        "other": other,
+        "other2": other2,
+    }
+
+
+C = ConstraintType
+
+
+def coincident(
+    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+) -> Slvs_Constraint:
+    """Two points coincide, or a point lies on a workplane, line, circle or arc."""
+    if _is_point(e1) and _is_point(e2):
+        return add_constraint(grouph, C.POINTS_COINCIDENT, wp, 0.0, e1, e2)
+    if _is_point(e1) and _is_wp(e2):
+        return add_constraint(grouph, C.PT_IN_PLANE, E_FREE_IN_3D, 0.0, e1, E_NONE, e2)
+    if _is_point(e1) and _is_line(e2):
+        return add_constraint(grouph, C.PT_ON_LINE, wp, 0.0, e1, E_NONE, e2)
+    if _is_point(e1) and _is_round(e2):
+        return add_constraint(grouph, C.PT_ON_CIRCLE, wp, 0.0, e1, E_NONE, e2)
+    raise ModelError(f"invalid arguments for coincident: entities {e1['h']} and {e2['h']}")
+
+
+def distance(
+    grouph: int,
+    e1: Slvs_Entity,
+    e2: Slvs_Entity,
+    value: float,
+    wp: Slvs_Entity = E_FREE_IN_3D,
+) -> Slvs_Constraint:
+    """The distance between two points, from a point to a workplane, or to a line."""
+    if _is_point(e1) and _is_point(e2):
+        return add_constraint(grouph, C.PT_PT_DISTANCE, wp, value, e1, e2)
+    if _is_point(e1) and _is_wp(e2) and _free(wp):
+        return add_constraint(grouph, C.PT_PLANE_DISTANCE, e2, value, e1, E_NONE, e2)
+    if _is_point(e1) and _is_line(e2):
+        return add_constraint(grouph, C.PT_LINE_DISTANCE, wp, value, e1, E_NONE, e2)
+    raise ModelError(f"invalid arguments for distance: entities {e1['h']} and {e2['h']}")
+
+
+def equal(
+    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+) -> Slvs_Constraint:
+    """Two lines of equal length, a line as long as an arc, or two equal radii."""
+    if _is_line(e1) and _is_line(e2):
+        return add_constraint(grouph, C.EQUAL_LENGTH_LINES, wp, 0.0, E_NONE, E_NONE, e1, e2)
+    if _is_line(e1) and _is_round(e2):
+        return add_constraint(grouph, C.EQUAL_LINE_ARC_LEN, wp, 0.0, E_NONE, E_NONE, e1, e2)
+    if _is_round(e1) and _is_round(e2):
+        return add_constraint(grouph, C.EQUAL_RADIUS, wp, 0.0, E_NONE, E_NONE, e1, e2)
+    raise ModelError(f"invalid arguments for equal: entities {e1['h']} and {e2['h']}")
+
+
+def _lines(*es: Slvs_Entity) -> bool:
+    return all(_is_line(e) for e in es)
+
+
+def _plane_or_free(wp: Slvs_Entity) -> bool:
+    return _is_wp(wp) or _free(wp)
+
+
+def equal_angle(
+    grouph: int,
+    e1: Slvs_Entity,
+    e2: Slvs_Entity,
+    e3: Slvs_Entity,
+    e4: Slvs_Entity,
+    wp: Slvs_Entity = E_FREE_IN_3D,
+) -> Slvs_Constraint:
+    """The angle between lines e1 and e2 equals the angle between e3 and e4."""
+    _want(_lines(e1, e2, e3, e4) and _plane_or_free(wp), "invalid arguments for equal_angle")
+    return add_constraint(grouph, C.EQUAL_ANGLE, wp, 0.0, E_NONE, E_NONE, e1, e2, e3, e4)
+
+
+def equal_point_to_line(
+    grouph: int,
+    e1: Slvs_Entity,
+    e2: Slvs_Entity,
+    e3: Slvs_Entity,
+    e4: Slvs_Entity,
+    wp: Slvs_Entity = E_FREE_IN_3D,
+) -> Slvs_Constraint:
+    """The distance from point e1 to line e2 equals that from point e3 to line e4."""
+    ok = _is_point(e1) and _is_line(e2) and _is_point(e3) and _is_line(e4)
+    _want(ok and _plane_or_free(wp), "invalid arguments for equal_point_to_line")
+    return add_constraint(grouph, C.EQ_PT_LN_DISTANCES, wp, 0.0, e1, e2, e3, e4)
+
+
+def ratio(
+    grouph: int,
+    e1: Slvs_Entity,
+    e2: Slvs_Entity,
+    value: float,
+    wp: Slvs_Entity = E_FREE_IN_3D,
+) -> Slvs_Constraint:
+    """The length of line e1 over that of line e2."""
+    _want(_lines(e1, e2) and _plane_or_free(wp), "invalid arguments for ratio")
+    return add_constraint(grouph, C.LENGTH_RATIO, wp, value, E_NONE, E_NONE, e1, e2)
+
+
+def symmetric(
+    grouph: int,
+    e1: Slvs_Entity,
+    e2: Slvs_Entity,
+    e3: Slvs_Entity = E_NONE,
+    wp: Slvs_Entity = E_FREE_IN_3D,
+) -> Slvs_Constraint:
+    """Two points symmetric about a workplane (e3) or, in ``wp``, about a line (e3)."""
+    if _is_point(e1) and _is_point(e2) and _is_wp(e3) and _free(wp):
+        plane = e3 if e1["type"] == _P2 else E_FREE_IN_3D
+        return add_constraint(grouph, C.SYMMETRIC, plane, 0.0, e1, e2, e3)
+    if e1["type"] == _P2 and e2["type"] == _P2 and _is_line(e3):
+        _want(not _free(wp), "3d workplane given for a 2d constraint")
+        return add_constraint(grouph, C.SYMMETRIC_LINE, wp, 0.0, e1, e2, e3)
+    raise ModelError(f"invalid arguments for symmetric: entities {e1['h']}, {e2['h']}, {e3['h']}")
+
+
+def symmetric_h(
+    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity
+) -> Slvs_Constraint:
+    """Two points symmetric about the vertical axis of ``wp`` (mirrored left to right)."""
+    _want(not _free(wp), "3d workplane given for a 2d constraint")
+    _want(e1["type"] == _P2 and e2["type"] == _P2, "invalid arguments for symmetric_h")
+    return add_constraint(grouph, C.SYMMETRIC_HORIZ, wp, 0.0, e1, e2)
+
+
+def symmetric_v(
+    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity
+) -> Slvs_Constraint:
+    """Two points symmetric about the horizontal axis of ``wp`` (mirrored top to bottom)."""
+    _want(not _free(wp), "3d workplane given for a 2d constraint")
+    _want(e1["type"] == _P2 and e2["type"] == _P2, "invalid arguments for symmetric_v")
+    return add_constraint(grouph, C.SYMMETRIC_VERT, wp, 0.0, e1, e2)
+
+
+def midpoint(
+    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+) -> Slvs_Constraint:
+    """Point e1 is the midpoint of line e2."""
+    _want(_is_point(e1) and _is_line(e2) and _plane_or_free(wp), "invalid arguments for midpoint")
+    return add_constraint(grouph, C.AT_MIDPOINT, wp, 0.0, e1, E_NONE, e2)
+
+
+def horizontal(
+    grouph: int, e1: Slvs_Entity, wp: Slvs_Entity, e2: Slvs_Entity = E_NONE
+) -> Slvs_Constraint:
+    """A line (or the two points e1, e2) horizontal in ``wp``."""
+    _want(not _free(wp), "horizontal is not supported in 3d")
+    if _is_line(e1):
+        return add_constraint(grouph, C.HORIZONTAL, wp, 0.0, E_NONE, E_NONE, e1)
+    _want(e1["type"] == _P2 and e2["type"] == _P2, "invalid arguments for horizontal")
+    return add_constraint(grouph, C.HORIZONTAL, wp, 0.0, e1, e2)
+
+
+def vertical(
+    grouph: int, e1: Slvs_Entity, wp: Slvs_Entity, e2: Slvs_Entity = E_NONE
+) -> Slvs_Constraint:
+    """A line (or the two points e1, e2) vertical in ``wp``."""
+    _want(not _free(wp), "vertical is not supported in 3d")
+    if _is_line(e1):
+        return add_constraint(grouph, C.VERTICAL, wp, 0.0, E_NONE, E_NONE, e1)
+    _want(e1["type"] == _P2 and e2["type"] == _P2, "invalid arguments for vertical")
+    return add_constraint(grouph, C.VERTICAL, wp, 0.0, e1, e2)
+
+
+def diameter(grouph: int, e1: Slvs_Entity, value: float) -> Slvs_Constraint:
+    """The diameter of a circle or arc."""
+    _want(_is_round(e1), f"invalid arguments for diameter: entity {e1['h']}")
+    return add_constraint(grouph, C.DIAMETER, E_FREE_IN_3D, value, E_NONE, E_NONE, e1)
+
+
+def same_orientation(grouph: int, e1: Slvs_Entity, e2: Slvs_Entity) -> Slvs_Constraint:
+    """Two 3D normals have the same orientation."""
+    _want(e1["type"] == _N3 and e2["type"] == _N3, "invalid arguments for same_orientation")
+    return add_constraint(grouph, C.SAME_ORIENTATION, E_FREE_IN_3D, 0.0, E_NONE, E_NONE, e1, e2)
+
+
+def angle(
+    grouph: int,
+    e1: Slvs_Entity,
+    e2: Slvs_Entity,
+    value: float,
+    wp: Slvs_Entity = E_FREE_IN_3D,
+    inverse: bool = False,
+) -> Slvs_Constraint:
+    """The angle between two lines, in degrees (``inverse``: its supplement)."""
+    _want(_lines(e1, e2) and _plane_or_free(wp), "invalid arguments for angle")
+    return add_constraint(
+        grouph, C.ANGLE, wp, value, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, int(inverse)
+    )
+
+
+def perpendicular(
+    grouph: int,
+    e1: Slvs_Entity,
+    e2: Slvs_Entity,
+    wp: Slvs_Entity = E_FREE_IN_3D,
+    inverse: bool = False,
+) -> Slvs_Constraint:
+    """Two lines are perpendicular."""
+    _want(_lines(e1, e2) and _plane_or_free(wp), "invalid arguments for perpendicular")
+    return add_constraint(
+        grouph, C.PERPENDICULAR, wp, 0.0, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, int(inverse)
+    )
+
+
+def parallel(
+    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+) -> Slvs_Constraint:
+    """Two lines are parallel."""
+    _want(_lines(e1, e2) and _plane_or_free(wp), "invalid arguments for parallel")
+    return add_constraint(grouph, C.PARALLEL, wp, 0.0, E_NONE, E_NONE, e1, e2)
+
+
+def _same(a: int, b: int) -> bool:
+    pa, pb = _m.point_values(a), _m.point_values(b)
+    return len(pa) == len(pb) and all(abs(x - y) < 1e-6 for x, y in zip(pa, pb))
+
+
+def _ends(e: Slvs_Entity) -> Tuple[int, int]:
+    # Start and finish of an arc or a cubic.
+    if e["type"] == _ARC:
+        return e["point"][1], e["point"][2]
+    return e["point"][0], e["point"][3]
+
+
+def tangent(
+    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+) -> Slvs_Constraint:
+    """An arc or cubic tangent to a line, or two curves tangent, where they share an end
+    (which end is found from where the points are now)."""
+    curve = (_ARC, _CUBIC)
+    if e1["type"] == _ARC and _is_line(e2) or e1["type"] == _CUBIC and _is_line(e2):
+        is_arc = e1["type"] == _ARC
+        if is_arc:
+            _want(not _free(wp), "3d workplane given for a 2d constraint")
+        s, f = _ends(e1)
+        l0, l1 = e2["point"][0], e2["point"][1]
+        if _same(l0, s) or _same(l1, s):
+            other = 0
+        elif _same(l0, f) or _same(l1, f):
+            other = 1
+        else:
+            raise ModelError(
+                f"entities {e1['h']} and {e2['h']} must share an end before they are made tangent"
+            )
+        kind = C.ARC_LINE_TANGENT if is_arc else C.CUBIC_LINE_TANGENT
+        return add_constraint(grouph, kind, wp, 0.0, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, other)
+    if e1["type"] in curve and e2["type"] in curve:
+        _want(not _free(wp), "3d workplane given for a 2d constraint")
+        (as_, af), (bs, bf) = _ends(e1), _ends(e2)
+        for o1, o2, p, q in ((0, 0, as_, bs), (0, 1, as_, bf), (1, 0, af, bs), (1, 1, af, bf)):
+            if _same(p, q):
+                return add_constraint(
+                    grouph, C.CURVE_CURVE_TANGENT, wp, 0.0, E_NONE, E_NONE, e1, e2,
+                    E_NONE, E_NONE, o1, o2,
+                )
+        raise ModelError(
+            f"entities {e1['h']} and {e2['h']} must share an end before they are made tangent"
+        )
+    raise ModelError(f"invalid arguments for tangent: entities {e1['h']} and {e2['h']}")
+
+
+def distance_proj(grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, value: float) -> Slvs_Constraint:
+    """The distance between two points projected onto a line (the free 3D form)."""
+    _want(_is_point(e1) and _is_point(e2), "invalid arguments for distance_proj")
+    return add_constraint(grouph, C.PROJ_PT_DISTANCE, E_FREE_IN_3D, value, e1, e2)
+
+
+def length_diff(
+    grouph: int,
+    Slvs_entityA: Slvs_Entity,
+    Slvs_entityB: Slvs_Entity,
+    value: float,
+    workplane: Slvs_Entity = E_FREE_IN_3D,
+) -> Slvs_Constraint:
+    """The length of one line less the length of another."""
+    ok = _lines(Slvs_entityA, Slvs_entityB) and _plane_or_free(workplane)
+    _want(ok, "invalid arguments for length_diff")
+    return add_constraint(
+        grouph, C.LENGTH_DIFFERENCE, workplane, value, E_NONE, E_NONE, Slvs_entityA, Slvs_entityB
+    )
+
+
+def dragged(grouph: int, e1: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D) -> Slvs_Constraint:
+    """The point stays where it is (a ``WHERE_DRAGGED`` constraint)."""
+    _want(_is_point(e1) and _plane_or_free(wp), "invalid arguments for dragged")
+    return add_constraint(grouph, C.WHERE_DRAGGED, wp, 0.0, e1)
+
+
+def mark_dragged(ptA: Slvs_Entity) -> None:
+    """Marks a point as dragged: later solves move its coordinates as little as possible."""
+    _want(_is_point(ptA), f"entity {ptA['h']} is not a point")
+    n = 3 if ptA["type"] == _P3 else 2
+    _dragged.update(ptA["param"][:n])
+
+
+# ---------------------------------------------------------------- solving
+
+
+def clear_sketch() -> None:
+    """Empties the sketch: parameters, entities, constraints and dragged marks."""
+    global _m
+    _m = SlvsModel()
+    _dragged.clear()
+
+
+def solve_sketch(
+    grouph: int, calculateFaileds: bool
+) -> Union[Slvs_SolveResult, Tuple[Slvs_SolveResult, List[int]]]:
+    """Solves group ``grouph``. Returns ``{"result", "dof", "nbad"}``; with
+    ``calculateFaileds`` also the list of failed constraint handles, as a pair."""
+    result, dof, failed = _m.solve(grouph, sorted(_dragged), bool(calculateFaileds))
+    out: Slvs_SolveResult = {"result": result, "dof": dof, "nbad": len(failed)}
+    if calculateFaileds:
+        return out, list(failed)
+    return out
+
+
+def get_param_value(ph: int) -> float:
+    """The value of parameter ``ph``."""
+    return _m.value(ph)
+
+
+def set_param_value(ph: int, value: float) -> None:
+    """Sets the value of parameter ``ph``."""
+    _m.set_value(ph, value)
+
+
+def to_system() -> System:
+    """The module's sketch as a ``loci.System`` (a copy): to check it, or save it as JSON."""
+    return _m.to_system()
