@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from enum import IntEnum
-from typing import Dict, List, Set, Tuple, TypedDict, Union
+from typing import List, Sequence, Set, Tuple, TypedDict, Union
 
 from ._loci import ModelError, SlvsModel, System
 
@@ -224,7 +224,7 @@ def _entity(
     point: Tuple[int, int, int, int] = (0, 0, 0, 0),
     normal: int = 0,
     distance: int = 0,
-    param: Tuple[int, int, int, int] = (0, 0, 0, 0),
+    param: Sequence[int] = (0, 0, 0, 0),
 ) -> Slvs_Entity:
     return {
         "h": h,
