@@ -265,11 +265,21 @@ pub fn table(rows: &[Row]) -> String {
                 .find(|r| r.n == n && r.label == label)
                 .and_then(|r| r.timing.as_ref().ok())
         };
+        let solved = |t: &Timing| t.outcome == "okay" || t.outcome == "redundant_okay";
         if let (Some(ours), Some(theirs)) = (get(Api::LociSlvs.label()), get(Api::PypiSlvs.label())) {
-            out.push_str(&format!(
-                "{n} segments: PyPI slvs takes {:.0}x as long as loci.slvs (build and solve)\n",
-                theirs.total() / ours.total()
-            ));
+            if solved(theirs) {
+                out.push_str(&format!(
+                    "{n} segments: PyPI slvs takes {:.0}x as long as loci.slvs (build and solve)\n",
+                    theirs.total() / ours.total()
+                ));
+            } else {
+                out.push_str(&format!(
+                    "{n} segments: PyPI slvs does not solve it ({} after {} ms); loci.slvs solves it in {} ms\n",
+                    theirs.outcome,
+                    ms(theirs.total()),
+                    ms(ours.total())
+                ));
+            }
         } else if let (Some(ours), Some(Err(why))) = (
             get(Api::LociSlvs.label()),
             rows.iter()

@@ -5,7 +5,10 @@
 //! keeps `slvs`'s functions and dictionaries.
 
 use crate::errors;
-use loci_slvs::abi::{Slvs_Constraint, Slvs_Entity, Slvs_Param, SLVS_RESULT_INCONSISTENT};
+use loci_slvs::abi::{
+    Slvs_Constraint, Slvs_Entity, Slvs_Param, SLVS_E_LINE_SEGMENT, SLVS_E_POINT_IN_2D,
+    SLVS_RESULT_INCONSISTENT,
+};
 use loci_slvs::convert::InputError;
 use pyo3::prelude::*;
 
@@ -72,6 +75,20 @@ impl SlvsModel {
             param,
         });
         Ok((h, param))
+    }
+
+    /// Adds a point in workplane `wrkpl` at (u, v): the common case, without `add_entity`'s
+    /// conversions of arrays. Returns its handle and its two parameters.
+    fn add_point_2d(&mut self, group: u32, wrkpl: u32, u: f64, v: f64) -> PyResult<(u32, u32, u32)> {
+        let (h, p) = self.add_entity(group, SLVS_E_POINT_IN_2D, wrkpl, [0; 4], 0, 0, vec![u, v])?;
+        Ok((h, p[0], p[1]))
+    }
+
+    /// Adds a line from `a` to `b`; returns its handle.
+    fn add_line(&mut self, group: u32, wrkpl: u32, a: u32, b: u32) -> PyResult<u32> {
+        Ok(self
+            .add_entity(group, SLVS_E_LINE_SEGMENT, wrkpl, [a, b, 0, 0], 0, 0, Vec::new())?
+            .0)
     }
 
     /// Adds a constraint; returns its handle.

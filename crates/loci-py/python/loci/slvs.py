@@ -258,17 +258,14 @@ def _free(wp: Slvs_Entity) -> bool:
     return wp["h"] == 0
 
 
-def _want(ok: bool, what: str) -> None:
-    if not ok:
-        raise ModelError(what)
-
-
 def _want_wp(wp: Slvs_Entity) -> None:
-    _want(_is_wp(wp), f"workplane argument is entity {wp['h']}, not a workplane")
+    if not (_is_wp(wp)):
+        raise ModelError(f"workplane argument is entity {wp['h']}, not a workplane")
 
 
 def _want_p2(p: Slvs_Entity, name: str) -> None:
-    _want(p["type"] == _P2, f"{name} argument is entity {p['h']}, not a 2d point")
+    if not (p["type"] == _P2):
+        raise ModelError(f"{name} argument is entity {p['h']}, not a 2d point")
 
 
 # ---------------------------------------------------------------- quaternions
@@ -341,8 +338,20 @@ def _add(
 
 def add_point_2d(grouph: int, u: float, v: float, wp: Slvs_Entity) -> Slvs_Entity:
     """A point at (u, v) in workplane ``wp``."""
-    _want_wp(wp)
-    return _add(grouph, _P2, wp["h"], values=(u, v))
+    if wp["type"] != _WP:
+        _want_wp(wp)
+    w = wp["h"]
+    h, pu, pv = _m.add_point_2d(grouph, w, u, v)
+    return {
+        "h": h,
+        "group": grouph,
+        "type": _P2,
+        "wrkpl": w,
+        "point": [0, 0, 0, 0],
+        "normal": 0,
+        "distance": 0,
+        "param": [pu, pv, 0, 0],
+    }
 
 
 def add_point_3d(grouph: int, x: float, y: float, z: float) -> Slvs_Entity:
@@ -369,16 +378,30 @@ def add_distance(grouph: int, d: float, wp: Slvs_Entity) -> Slvs_Entity:
 
 def add_line_2d(grouph: int, p1: Slvs_Entity, p2: Slvs_Entity, wp: Slvs_Entity) -> Slvs_Entity:
     """A line segment between two 2D points in ``wp``."""
-    _want_wp(wp)
-    _want_p2(p1, "ptA")
-    _want_p2(p2, "ptB")
-    return _add(grouph, _LINE, wp["h"], (p1["h"], p2["h"], 0, 0))
+    if wp["type"] != _WP or p1["type"] != _P2 or p2["type"] != _P2:
+        _want_wp(wp)
+        _want_p2(p1, "ptA")
+        _want_p2(p2, "ptB")
+    w, a, b = wp["h"], p1["h"], p2["h"]
+    h = _m.add_line(grouph, w, a, b)
+    return {
+        "h": h,
+        "group": grouph,
+        "type": _LINE,
+        "wrkpl": w,
+        "point": [a, b, 0, 0],
+        "normal": 0,
+        "distance": 0,
+        "param": [0, 0, 0, 0],
+    }
 
 
 def add_line_3d(grouph: int, p1: Slvs_Entity, p2: Slvs_Entity) -> Slvs_Entity:
     """A line segment between two 3D points."""
-    _want(p1["type"] == _P3, f"ptA argument is entity {p1['h']}, not a 3d point")
-    _want(p2["type"] == _P3, f"ptB argument is entity {p2['h']}, not a 3d point")
+    if not (p1["type"] == _P3):
+        raise ModelError(f"ptA argument is entity {p1['h']}, not a 3d point")
+    if not (p2["type"] == _P3):
+        raise ModelError(f"ptB argument is entity {p2['h']}, not a 3d point")
     return _add(grouph, _LINE, 0, (p1["h"], p2["h"], 0, 0))
 
 
@@ -407,7 +430,8 @@ def add_arc(
 ) -> Slvs_Entity:
     """An arc about ``ct``, counter-clockwise from ``start`` to ``end``, in ``wp``."""
     _want_wp(wp)
-    _want(nm["type"] == _N3, f"normal argument is entity {nm['h']}, not a 3d normal")
+    if not (nm["type"] == _N3):
+        raise ModelError(f"normal argument is entity {nm['h']}, not a 3d normal")
     _want_p2(ct, "center")
     _want_p2(start, "start")
     _want_p2(end, "end")
@@ -423,9 +447,11 @@ def add_circle(
 ) -> Slvs_Entity:
     """A circle about ``ct`` whose radius is the distance entity ``radius``, in ``wp``."""
     _want_wp(wp)
-    _want(nm["type"] == _N3, f"normal argument is entity {nm['h']}, not a 3d normal")
+    if not (nm["type"] == _N3):
+        raise ModelError(f"normal argument is entity {nm['h']}, not a 3d normal")
     _want_p2(ct, "center")
-    _want(radius["type"] == _DIST, f"radius argument is entity {radius['h']}, not a distance")
+    if not (radius["type"] == _DIST):
+        raise ModelError(f"radius argument is entity {radius['h']}, not a distance")
     return _add(grouph, _CIRCLE, wp["h"], (ct["h"], 0, 0, 0), nm["h"], radius["h"])
 
 
@@ -459,7 +485,8 @@ def add_constraint(
 ) -> Slvs_Constraint:
     """A constraint of any type with SolveSpace's fields."""
     c_type = int(c_type)
-    other, other2 = (1 if other else 0), (1 if other2 else 0)
+    other = 1 if other else 0
+    other2 = 1 if other2 else 0
     h = _m.add_constraint(
         grouph,
         c_type,
@@ -540,7 +567,15 @@ def equal(
 
 
 def _lines(*es: Slvs_Entity) -> bool:
-    return all(_is_line(e) for e in es)
+    for e in es:
+        if e["type"] != _LINE:
+            return False
+    return True
+
+
+def _two_lines(a: Slvs_Entity, b: Slvs_Entity, wp: Slvs_Entity) -> bool:
+    # Both lines, in a workplane or free in 3D: the common test of the two-line helpers.
+    return a["type"] == _LINE and b["type"] == _LINE and (wp["type"] == _WP or wp["h"] == 0)
 
 
 def _plane_or_free(wp: Slvs_Entity) -> bool:
@@ -556,7 +591,8 @@ def equal_angle(
     wp: Slvs_Entity = E_FREE_IN_3D,
 ) -> Slvs_Constraint:
     """The angle between lines e1 and e2 equals the angle between e3 and e4."""
-    _want(_lines(e1, e2, e3, e4) and _plane_or_free(wp), "invalid arguments for equal_angle")
+    if not (_lines(e1, e2, e3, e4) and _plane_or_free(wp)):
+        raise ModelError("invalid arguments for equal_angle")
     return add_constraint(grouph, C.EQUAL_ANGLE, wp, 0.0, E_NONE, E_NONE, e1, e2, e3, e4)
 
 
@@ -570,7 +606,8 @@ def equal_point_to_line(
 ) -> Slvs_Constraint:
     """The distance from point e1 to line e2 equals that from point e3 to line e4."""
     ok = _is_point(e1) and _is_line(e2) and _is_point(e3) and _is_line(e4)
-    _want(ok and _plane_or_free(wp), "invalid arguments for equal_point_to_line")
+    if not (ok and _plane_or_free(wp)):
+        raise ModelError("invalid arguments for equal_point_to_line")
     return add_constraint(grouph, C.EQ_PT_LN_DISTANCES, wp, 0.0, e1, e2, e3, e4)
 
 
@@ -582,7 +619,8 @@ def ratio(
     wp: Slvs_Entity = E_FREE_IN_3D,
 ) -> Slvs_Constraint:
     """The length of line e1 over that of line e2."""
-    _want(_lines(e1, e2) and _plane_or_free(wp), "invalid arguments for ratio")
+    if not _two_lines(e1, e2, wp):
+        raise ModelError("invalid arguments for ratio")
     return add_constraint(grouph, C.LENGTH_RATIO, wp, value, E_NONE, E_NONE, e1, e2)
 
 
@@ -598,7 +636,8 @@ def symmetric(
         plane = e3 if e1["type"] == _P2 else E_FREE_IN_3D
         return add_constraint(grouph, C.SYMMETRIC, plane, 0.0, e1, e2, e3)
     if e1["type"] == _P2 and e2["type"] == _P2 and _is_line(e3):
-        _want(not _free(wp), "3d workplane given for a 2d constraint")
+        if not (not _free(wp)):
+            raise ModelError("3d workplane given for a 2d constraint")
         return add_constraint(grouph, C.SYMMETRIC_LINE, wp, 0.0, e1, e2, e3)
     raise ModelError(f"invalid arguments for symmetric: entities {e1['h']}, {e2['h']}, {e3['h']}")
 
@@ -607,8 +646,10 @@ def symmetric_h(
     grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity
 ) -> Slvs_Constraint:
     """Two points symmetric about the vertical axis of ``wp`` (mirrored left to right)."""
-    _want(not _free(wp), "3d workplane given for a 2d constraint")
-    _want(e1["type"] == _P2 and e2["type"] == _P2, "invalid arguments for symmetric_h")
+    if not (not _free(wp)):
+        raise ModelError("3d workplane given for a 2d constraint")
+    if not (e1["type"] == _P2 and e2["type"] == _P2):
+        raise ModelError("invalid arguments for symmetric_h")
     return add_constraint(grouph, C.SYMMETRIC_HORIZ, wp, 0.0, e1, e2)
 
 
@@ -616,8 +657,10 @@ def symmetric_v(
     grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity
 ) -> Slvs_Constraint:
     """Two points symmetric about the horizontal axis of ``wp`` (mirrored top to bottom)."""
-    _want(not _free(wp), "3d workplane given for a 2d constraint")
-    _want(e1["type"] == _P2 and e2["type"] == _P2, "invalid arguments for symmetric_v")
+    if not (not _free(wp)):
+        raise ModelError("3d workplane given for a 2d constraint")
+    if not (e1["type"] == _P2 and e2["type"] == _P2):
+        raise ModelError("invalid arguments for symmetric_v")
     return add_constraint(grouph, C.SYMMETRIC_VERT, wp, 0.0, e1, e2)
 
 
@@ -625,7 +668,8 @@ def midpoint(
     grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
     """Point e1 is the midpoint of line e2."""
-    _want(_is_point(e1) and _is_line(e2) and _plane_or_free(wp), "invalid arguments for midpoint")
+    if not (_is_point(e1) and _is_line(e2) and _plane_or_free(wp)):
+        raise ModelError("invalid arguments for midpoint")
     return add_constraint(grouph, C.AT_MIDPOINT, wp, 0.0, e1, E_NONE, e2)
 
 
@@ -633,10 +677,12 @@ def horizontal(
     grouph: int, e1: Slvs_Entity, wp: Slvs_Entity, e2: Slvs_Entity = E_NONE
 ) -> Slvs_Constraint:
     """A line (or the two points e1, e2) horizontal in ``wp``."""
-    _want(not _free(wp), "horizontal is not supported in 3d")
+    if not (not _free(wp)):
+        raise ModelError("horizontal is not supported in 3d")
     if _is_line(e1):
         return add_constraint(grouph, C.HORIZONTAL, wp, 0.0, E_NONE, E_NONE, e1)
-    _want(e1["type"] == _P2 and e2["type"] == _P2, "invalid arguments for horizontal")
+    if not (e1["type"] == _P2 and e2["type"] == _P2):
+        raise ModelError("invalid arguments for horizontal")
     return add_constraint(grouph, C.HORIZONTAL, wp, 0.0, e1, e2)
 
 
@@ -644,22 +690,26 @@ def vertical(
     grouph: int, e1: Slvs_Entity, wp: Slvs_Entity, e2: Slvs_Entity = E_NONE
 ) -> Slvs_Constraint:
     """A line (or the two points e1, e2) vertical in ``wp``."""
-    _want(not _free(wp), "vertical is not supported in 3d")
+    if not (not _free(wp)):
+        raise ModelError("vertical is not supported in 3d")
     if _is_line(e1):
         return add_constraint(grouph, C.VERTICAL, wp, 0.0, E_NONE, E_NONE, e1)
-    _want(e1["type"] == _P2 and e2["type"] == _P2, "invalid arguments for vertical")
+    if not (e1["type"] == _P2 and e2["type"] == _P2):
+        raise ModelError("invalid arguments for vertical")
     return add_constraint(grouph, C.VERTICAL, wp, 0.0, e1, e2)
 
 
 def diameter(grouph: int, e1: Slvs_Entity, value: float) -> Slvs_Constraint:
     """The diameter of a circle or arc."""
-    _want(_is_round(e1), f"invalid arguments for diameter: entity {e1['h']}")
+    if not (_is_round(e1)):
+        raise ModelError(f"invalid arguments for diameter: entity {e1['h']}")
     return add_constraint(grouph, C.DIAMETER, E_FREE_IN_3D, value, E_NONE, E_NONE, e1)
 
 
 def same_orientation(grouph: int, e1: Slvs_Entity, e2: Slvs_Entity) -> Slvs_Constraint:
     """Two 3D normals have the same orientation."""
-    _want(e1["type"] == _N3 and e2["type"] == _N3, "invalid arguments for same_orientation")
+    if not (e1["type"] == _N3 and e2["type"] == _N3):
+        raise ModelError("invalid arguments for same_orientation")
     return add_constraint(grouph, C.SAME_ORIENTATION, E_FREE_IN_3D, 0.0, E_NONE, E_NONE, e1, e2)
 
 
@@ -672,7 +722,8 @@ def angle(
     inverse: bool = False,
 ) -> Slvs_Constraint:
     """The angle between two lines, in degrees (``inverse``: its supplement)."""
-    _want(_lines(e1, e2) and _plane_or_free(wp), "invalid arguments for angle")
+    if not _two_lines(e1, e2, wp):
+        raise ModelError("invalid arguments for angle")
     return add_constraint(
         grouph, C.ANGLE, wp, value, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, int(inverse)
     )
@@ -686,7 +737,8 @@ def perpendicular(
     inverse: bool = False,
 ) -> Slvs_Constraint:
     """Two lines are perpendicular."""
-    _want(_lines(e1, e2) and _plane_or_free(wp), "invalid arguments for perpendicular")
+    if not _two_lines(e1, e2, wp):
+        raise ModelError("invalid arguments for perpendicular")
     return add_constraint(
         grouph, C.PERPENDICULAR, wp, 0.0, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, int(inverse)
     )
@@ -696,7 +748,8 @@ def parallel(
     grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
     """Two lines are parallel."""
-    _want(_lines(e1, e2) and _plane_or_free(wp), "invalid arguments for parallel")
+    if not _two_lines(e1, e2, wp):
+        raise ModelError("invalid arguments for parallel")
     return add_constraint(grouph, C.PARALLEL, wp, 0.0, E_NONE, E_NONE, e1, e2)
 
 
@@ -721,7 +774,8 @@ def tangent(
     if e1["type"] == _ARC and _is_line(e2) or e1["type"] == _CUBIC and _is_line(e2):
         is_arc = e1["type"] == _ARC
         if is_arc:
-            _want(not _free(wp), "3d workplane given for a 2d constraint")
+            if not (not _free(wp)):
+                raise ModelError("3d workplane given for a 2d constraint")
         s, f = _ends(e1)
         l0, l1 = e2["point"][0], e2["point"][1]
         if _same(l0, s) or _same(l1, s):
@@ -735,7 +789,8 @@ def tangent(
         kind = C.ARC_LINE_TANGENT if is_arc else C.CUBIC_LINE_TANGENT
         return add_constraint(grouph, kind, wp, 0.0, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, other)
     if e1["type"] in curve and e2["type"] in curve:
-        _want(not _free(wp), "3d workplane given for a 2d constraint")
+        if not (not _free(wp)):
+            raise ModelError("3d workplane given for a 2d constraint")
         (as_, af), (bs, bf) = _ends(e1), _ends(e2)
         for o1, o2, p, q in ((0, 0, as_, bs), (0, 1, as_, bf), (1, 0, af, bs), (1, 1, af, bf)):
             if _same(p, q):
@@ -751,7 +806,8 @@ def tangent(
 
 def distance_proj(grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, value: float) -> Slvs_Constraint:
     """The distance between two points projected onto a line (the free 3D form)."""
-    _want(_is_point(e1) and _is_point(e2), "invalid arguments for distance_proj")
+    if not (_is_point(e1) and _is_point(e2)):
+        raise ModelError("invalid arguments for distance_proj")
     return add_constraint(grouph, C.PROJ_PT_DISTANCE, E_FREE_IN_3D, value, e1, e2)
 
 
@@ -764,7 +820,8 @@ def length_diff(
 ) -> Slvs_Constraint:
     """The length of one line less the length of another."""
     ok = _lines(Slvs_entityA, Slvs_entityB) and _plane_or_free(workplane)
-    _want(ok, "invalid arguments for length_diff")
+    if not (ok):
+        raise ModelError("invalid arguments for length_diff")
     return add_constraint(
         grouph, C.LENGTH_DIFFERENCE, workplane, value, E_NONE, E_NONE, Slvs_entityA, Slvs_entityB
     )
@@ -772,13 +829,15 @@ def length_diff(
 
 def dragged(grouph: int, e1: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D) -> Slvs_Constraint:
     """The point stays where it is (a ``WHERE_DRAGGED`` constraint)."""
-    _want(_is_point(e1) and _plane_or_free(wp), "invalid arguments for dragged")
+    if not (_is_point(e1) and _plane_or_free(wp)):
+        raise ModelError("invalid arguments for dragged")
     return add_constraint(grouph, C.WHERE_DRAGGED, wp, 0.0, e1)
 
 
 def mark_dragged(ptA: Slvs_Entity) -> None:
     """Marks a point as dragged: later solves move its coordinates as little as possible."""
-    _want(_is_point(ptA), f"entity {ptA['h']} is not a point")
+    if not (_is_point(ptA)):
+        raise ModelError(f"entity {ptA['h']} is not a point")
     n = 3 if ptA["type"] == _P3 else 2
     _dragged.update(ptA["param"][:n])
 
