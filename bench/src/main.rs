@@ -361,7 +361,10 @@ fn python(args: &[String]) -> Result<()> {
     let mut limit = 300.0;
     let mut it = args.iter();
     while let Some(a) = it.next() {
-        let mut value = || it.next().with_context(|| format!("{a} needs a value\n{USAGE}"));
+        let mut value = || {
+            it.next()
+                .with_context(|| format!("{a} needs a value\n{USAGE}"))
+        };
         match a.as_str() {
             "--sizes" => {
                 sizes = value()?
@@ -384,7 +387,11 @@ fn python(args: &[String]) -> Result<()> {
     // SolveSpace's module where loci-bench keeps it, else beside loci.
     let slvs_py = slvs_py.unwrap_or_else(|| {
         let venv = bench.join(".venv/bin/python");
-        if venv.exists() { venv } else { py.clone() }
+        if venv.exists() {
+            venv
+        } else {
+            py.clone()
+        }
     });
     let rows = run_all(&sizes, &py, &slvs_py, bench, Duration::from_secs_f64(limit));
     print!("{}", table(&rows));

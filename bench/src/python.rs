@@ -202,7 +202,10 @@ pub fn python(
         build: f("build_s"),
         solve: f("solve_s"),
         outcome: v["outcome"].as_str().unwrap_or("?").to_owned(),
-        end: [v["end"][0].as_f64().unwrap_or(f64::NAN), v["end"][1].as_f64().unwrap_or(f64::NAN)],
+        end: [
+            v["end"][0].as_f64().unwrap_or(f64::NAN),
+            v["end"][1].as_f64().unwrap_or(f64::NAN),
+        ],
     })
 }
 
@@ -253,7 +256,10 @@ pub fn table(rows: &[Row]) -> String {
                     t.end[1]
                 ));
             }
-            Err(why) => out.push_str(&format!("| {} | {} | - | - | - | - | {why} | - |\n", r.n, r.label)),
+            Err(why) => out.push_str(&format!(
+                "| {} | {} | - | - | - | - | {why} | - |\n",
+                r.n, r.label
+            )),
         }
     }
     let mut sizes: Vec<usize> = rows.iter().map(|r| r.n).collect();
@@ -266,7 +272,8 @@ pub fn table(rows: &[Row]) -> String {
                 .and_then(|r| r.timing.as_ref().ok())
         };
         let solved = |t: &Timing| t.outcome == "okay" || t.outcome == "redundant_okay";
-        if let (Some(ours), Some(theirs)) = (get(Api::LociSlvs.label()), get(Api::PypiSlvs.label())) {
+        if let (Some(ours), Some(theirs)) = (get(Api::LociSlvs.label()), get(Api::PypiSlvs.label()))
+        {
             if solved(theirs) {
                 out.push_str(&format!(
                     "{n} segments: PyPI slvs takes {:.0}x as long as loci.slvs (build and solve)\n",
@@ -299,8 +306,8 @@ pub fn table(rows: &[Row]) -> String {
 /// workspace's `target/py-venv`), where `crates/loci-py/run-tests.sh` installs it.
 #[must_use]
 pub fn default_python(bench: &Path) -> PathBuf {
-    let target = std::env::var_os("CARGO_TARGET_DIR")
-        .map_or_else(|| bench.join("../target"), PathBuf::from);
+    let target =
+        std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| bench.join("../target"), PathBuf::from);
     target.join("py-venv/bin/python")
 }
 
@@ -323,9 +330,17 @@ pub fn run_all(
             timing: Ok(rust),
         });
         for api in [Api::Sketch, Api::LociSlvs, Api::PypiSlvs] {
-            let py = if api == Api::PypiSlvs { slvs_python } else { loci_python };
+            let py = if api == Api::PypiSlvs {
+                slvs_python
+            } else {
+                loci_python
+            };
             // SolveSpace's solve grows quickly with the chain: one repetition past 1,000.
-            let reps = if api == Api::PypiSlvs && n > 1000 { 1 } else { reps };
+            let reps = if api == Api::PypiSlvs && n > 1000 {
+                1
+            } else {
+                reps
+            };
             rows.push(Row {
                 n,
                 label: api.label(),

@@ -146,9 +146,7 @@ impl PyAssembly {
             ("distance" | "angle", None) => {
                 return Err(errors::model(format!("a {} mate needs a value", r#type)))
             }
-            (t, Some(_)) => {
-                return Err(errors::model(format!("a {t} mate takes no value")))
-            }
+            (t, Some(_)) => return Err(errors::model(format!("a {t} mate takes no value"))),
             (t, None) => json!({ "type": t }),
         };
         let kind: MateKind = serde_json::from_value(kind_json)
@@ -166,7 +164,11 @@ impl PyAssembly {
     /// The component names, in order.
     #[getter]
     fn components(&self) -> Vec<String> {
-        self.inner.components.iter().map(|c| c.name.clone()).collect()
+        self.inner
+            .components
+            .iter()
+            .map(|c| c.name.clone())
+            .collect()
     }
 
     /// The mates as dicts in the assembly file's form.

@@ -123,7 +123,12 @@ pub enum PointArg {
 }
 
 /// Wraps a shape handle as the Python object of its kind.
-fn shape_object(py: Python<'_>, sketch: &Py<PySketch>, kind: ShapeKind, h: u32) -> PyResult<PyObject> {
+fn shape_object(
+    py: Python<'_>,
+    sketch: &Py<PySketch>,
+    kind: ShapeKind,
+    h: u32,
+) -> PyResult<PyObject> {
     let sketch = sketch.clone_ref(py);
     Ok(match kind {
         ShapeKind::Point => Py::new(py, Point { sketch, h })?.into_any(),
@@ -304,11 +309,19 @@ impl PySketch {
 
     /// Adds a line between two points (``Point`` objects, or ``(x, y)`` for new ones).
     #[pyo3(signature = (a, b, *, construction = false))]
-    fn add_line(slf: &Bound<'_, Self>, a: PointArg, b: PointArg, construction: bool) -> PyResult<Line> {
+    fn add_line(
+        slf: &Bound<'_, Self>,
+        a: PointArg,
+        b: PointArg,
+        construction: bool,
+    ) -> PyResult<Line> {
         let a = resolve_point(slf, a)?;
         let b = resolve_point(slf, b)?;
         let mut s = slf.borrow_mut();
-        let l = s.inner.add_line(typed(a), typed(b)).map_err(errors::model)?;
+        let l = s
+            .inner
+            .add_line(typed(a), typed(b))
+            .map_err(errors::model)?;
         if construction {
             s.inner.set_construction(l, true).map_err(errors::model)?;
         }
@@ -320,10 +333,18 @@ impl PySketch {
 
     /// Adds a circle about a centre point (or ``(x, y)``) with a radius.
     #[pyo3(signature = (center, radius, *, construction = false))]
-    fn add_circle(slf: &Bound<'_, Self>, center: PointArg, radius: f64, construction: bool) -> PyResult<Circle> {
+    fn add_circle(
+        slf: &Bound<'_, Self>,
+        center: PointArg,
+        radius: f64,
+        construction: bool,
+    ) -> PyResult<Circle> {
         let c = resolve_point(slf, center)?;
         let mut s = slf.borrow_mut();
-        let id = s.inner.add_circle(typed(c), radius).map_err(errors::model)?;
+        let id = s
+            .inner
+            .add_circle(typed(c), radius)
+            .map_err(errors::model)?;
         if construction {
             s.inner.set_construction(id, true).map_err(errors::model)?;
         }
@@ -436,8 +457,15 @@ impl PySketch {
     /// The user constraints, in the order added.
     #[getter]
     fn constraints(slf: &Bound<'_, Self>) -> PyResult<Vec<Py<SketchConstraint>>> {
-        let ids: Vec<u32> = slf.borrow().inner.constraints().map(|(id, _)| id.0).collect();
-        ids.into_iter().map(|id| constraint_object(slf, id)).collect()
+        let ids: Vec<u32> = slf
+            .borrow()
+            .inner
+            .constraints()
+            .map(|(id, _)| id.0)
+            .collect();
+        ids.into_iter()
+            .map(|id| constraint_object(slf, id))
+            .collect()
     }
 
     /// A constraint by the name a sketch file gave it (or ``#i`` for the i-th, from 1).
@@ -463,8 +491,8 @@ impl PySketch {
         if let Some(f) = fields {
             for (k, v) in f.iter() {
                 let key: String = k.extract()?;
-                let shape = !v.is_instance_of::<pyo3::types::PyInt>()
-                    && v.extract::<ShapeArg>().is_ok();
+                let shape =
+                    !v.is_instance_of::<pyo3::types::PyInt>() && v.extract::<ShapeArg>().is_ok();
                 let val = if shape {
                     Value::from(v.extract::<ShapeArg>()?.h())
                 } else {
@@ -567,7 +595,11 @@ impl PySketch {
     /// The soft constraints a solve would add now, as ``(keeps, shape handle)`` pairs.
     #[getter]
     fn soft_constraints(&self) -> Vec<(String, u32)> {
-        self.inner.soft_constraints().into_iter().map(soft).collect()
+        self.inner
+            .soft_constraints()
+            .into_iter()
+            .map(soft)
+            .collect()
     }
 
     /// Every point's coordinates as an (N, 2) NumPy array, in the order of ``points``.
@@ -620,9 +652,7 @@ impl PySketch {
     fn check(&self, py: Python<'_>) -> PyResult<CheckResult> {
         let sys = self.inner.system();
         let d = py
-            .allow_threads(|| {
-                loci::diagnose(sys, Sketch::SHAPE_GROUP, self.inner.config())
-            })
+            .allow_threads(|| loci::diagnose(sys, Sketch::SHAPE_GROUP, self.inner.config()))
             .map_err(errors::solve)?;
         Ok(CheckResult::new(d))
     }
@@ -825,7 +855,10 @@ impl Line {
     fn a(&self, py: Python<'_>) -> PyResult<Point> {
         let id = self.id(py)?;
         let [a, _] = self.sketch.borrow(py).inner.line_points(id);
-        Ok(Point { sketch: self.sketch.clone_ref(py), h: a.entity().0 })
+        Ok(Point {
+            sketch: self.sketch.clone_ref(py),
+            h: a.entity().0,
+        })
     }
 
     /// The end point.
@@ -833,7 +866,10 @@ impl Line {
     fn b(&self, py: Python<'_>) -> PyResult<Point> {
         let id = self.id(py)?;
         let [_, b] = self.sketch.borrow(py).inner.line_points(id);
-        Ok(Point { sketch: self.sketch.clone_ref(py), h: b.entity().0 })
+        Ok(Point {
+            sketch: self.sketch.clone_ref(py),
+            h: b.entity().0,
+        })
     }
 
     /// ``((x1, y1), (x2, y2))``.
@@ -857,12 +893,18 @@ impl Circle {
             .borrow(py)
             .inner
             .as_circle(typed(self.h))
-            .ok_or_else(|| errors::model(format!("shape {} is not a circle of this sketch", self.h)))
+            .ok_or_else(|| {
+                errors::model(format!("shape {} is not a circle of this sketch", self.h))
+            })
     }
     fn describe(&self, py: Python<'_>) -> PyResult<String> {
         let id = self.id(py)?;
         let (c, r) = self.sketch.borrow(py).inner.circle(id);
-        Ok(format!("Circle(#{}, center={}, radius={r:.6})", self.h, fmt_xy(c)))
+        Ok(format!(
+            "Circle(#{}, center={}, radius={r:.6})",
+            self.h,
+            fmt_xy(c)
+        ))
     }
 }
 
@@ -873,7 +915,10 @@ impl Circle {
     fn center(&self, py: Python<'_>) -> PyResult<Point> {
         let id = self.id(py)?;
         let c = self.sketch.borrow(py).inner.circle_center(id);
-        Ok(Point { sketch: self.sketch.clone_ref(py), h: c.entity().0 })
+        Ok(Point {
+            sketch: self.sketch.clone_ref(py),
+            h: c.entity().0,
+        })
     }
 
     /// The current radius.
@@ -895,7 +940,10 @@ impl Arc {
     fn point(&self, py: Python<'_>, i: usize) -> PyResult<Point> {
         let id = self.id(py)?;
         let p = self.sketch.borrow(py).inner.arc_points(id)[i];
-        Ok(Point { sketch: self.sketch.clone_ref(py), h: p.entity().0 })
+        Ok(Point {
+            sketch: self.sketch.clone_ref(py),
+            h: p.entity().0,
+        })
     }
     fn geometry(&self, py: Python<'_>) -> PyResult<loci::sketch::ArcGeometry> {
         let id = self.id(py)?;
@@ -979,7 +1027,10 @@ impl Cubic {
         Ok(s.inner
             .defining_points(id)
             .into_iter()
-            .map(|p| Point { sketch: self.sketch.clone_ref(py), h: p.entity().0 })
+            .map(|p| Point {
+                sketch: self.sketch.clone_ref(py),
+                h: p.entity().0,
+            })
             .collect())
     }
 
@@ -987,7 +1038,14 @@ impl Cubic {
     #[getter]
     fn coords(&self, py: Python<'_>) -> PyResult<Vec<(f64, f64)>> {
         let id = self.id(py)?;
-        Ok(self.sketch.borrow(py).inner.cubic(id).iter().map(|p| (p[0], p[1])).collect())
+        Ok(self
+            .sketch
+            .borrow(py)
+            .inner
+            .cubic(id)
+            .iter()
+            .map(|p| (p[0], p[1]))
+            .collect())
     }
 }
 
@@ -1127,7 +1185,10 @@ impl SketchConstraint {
                     .iter()
                     .map(|(f, s)| format!("{f}=#{}", s.entity().0))
                     .collect();
-                let value = spec.value().map(|v| format!(", value={v}")).unwrap_or_default();
+                let value = spec
+                    .value()
+                    .map(|v| format!(", value={v}"))
+                    .unwrap_or_default();
                 let r = if reference { ", reference=True" } else { "" };
                 format!(
                     "SketchConstraint(#{}, {}, {}{value}{r})",
@@ -1266,4 +1327,3 @@ impl DragResult {
         )
     }
 }
-

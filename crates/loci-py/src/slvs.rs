@@ -79,7 +79,13 @@ impl SlvsModel {
 
     /// Adds a point in workplane `wrkpl` at (u, v): the common case, without `add_entity`'s
     /// conversions of arrays. Returns its handle and its two parameters.
-    fn add_point_2d(&mut self, group: u32, wrkpl: u32, u: f64, v: f64) -> PyResult<(u32, u32, u32)> {
+    fn add_point_2d(
+        &mut self,
+        group: u32,
+        wrkpl: u32,
+        u: f64,
+        v: f64,
+    ) -> PyResult<(u32, u32, u32)> {
         let (h, p) = self.add_entity(group, SLVS_E_POINT_IN_2D, wrkpl, [0; 4], 0, 0, vec![u, v])?;
         Ok((h, p[0], p[1]))
     }
@@ -87,7 +93,15 @@ impl SlvsModel {
     /// Adds a line from `a` to `b`; returns its handle.
     fn add_line(&mut self, group: u32, wrkpl: u32, a: u32, b: u32) -> PyResult<u32> {
         Ok(self
-            .add_entity(group, SLVS_E_LINE_SEGMENT, wrkpl, [a, b, 0, 0], 0, 0, Vec::new())?
+            .add_entity(
+                group,
+                SLVS_E_LINE_SEGMENT,
+                wrkpl,
+                [a, b, 0, 0],
+                0,
+                0,
+                Vec::new(),
+            )?
             .0)
     }
 

@@ -120,7 +120,9 @@ impl PySystem {
 fn constraint_kind(kind: &Bound<'_, PyAny>) -> PyResult<ConstraintKind> {
     if let Ok(code) = kind.extract::<u32>() {
         return ConstraintKind::from_slvs_code(code).ok_or_else(|| {
-            errors::model(format!("{code} is not a constraint type code (100000..=100037)"))
+            errors::model(format!(
+                "{code} is not a constraint type code (100000..=100037)"
+            ))
         });
     }
     let name: String = kind.extract()?;
@@ -231,7 +233,12 @@ impl PySystem {
     ) -> PyResult<u32> {
         let a = self.push_param(u, group)?;
         let b = self.push_param(v, group)?;
-        self.push_entity(Entity::point_2d(handle.unwrap_or(0), group, workplane, [a, b]))
+        self.push_entity(Entity::point_2d(
+            handle.unwrap_or(0),
+            group,
+            workplane,
+            [a, b],
+        ))
     }
 
     /// A point in 3D at (x, y, z), with three new parameters. Returns its handle.
@@ -244,7 +251,11 @@ impl PySystem {
         group: u32,
         handle: Option<u32>,
     ) -> PyResult<u32> {
-        let p = [self.push_param(x, group)?, self.push_param(y, group)?, self.push_param(z, group)?];
+        let p = [
+            self.push_param(x, group)?,
+            self.push_param(y, group)?,
+            self.push_param(z, group)?,
+        ];
         self.push_entity(Entity::point_3d(handle.unwrap_or(0), group, p))
     }
 
@@ -281,7 +292,12 @@ impl PySystem {
         group: u32,
         handle: Option<u32>,
     ) -> PyResult<u32> {
-        self.push_entity(Entity::workplane(handle.unwrap_or(0), group, origin, normal))
+        self.push_entity(Entity::workplane(
+            handle.unwrap_or(0),
+            group,
+            origin,
+            normal,
+        ))
     }
 
     /// The xy plane: its origin at (0, 0, 0), its normal the identity quaternion, all in
@@ -461,7 +477,9 @@ impl PySystem {
         if self.sys.set_value(handle.into(), value) {
             Ok(())
         } else {
-            Err(PyKeyError::new_err(format!("param {handle} does not exist")))
+            Err(PyKeyError::new_err(format!(
+                "param {handle} does not exist"
+            )))
         }
     }
 
@@ -522,7 +540,10 @@ impl PySystem {
                 handles.len()
             )));
         }
-        if let Some(h) = handles.iter().find(|&&h| self.sys.param_index(h.into()).is_none()) {
+        if let Some(h) = handles
+            .iter()
+            .find(|&&h| self.sys.param_index(h.into()).is_none())
+        {
             return Err(PyKeyError::new_err(format!("param {h} does not exist")));
         }
         for (h, x) in handles.iter().zip(v.iter()) {
