@@ -178,3 +178,78 @@ def test_same_answers_as_slvs() -> None:
     slvs = pytest.importorskip("slvs")
     theirs = build_sketch(slvs)
     assert ours == pytest.approx(theirs, abs=1e-6)
+
+
+def build_tangent_arc(m: Any) -> List[float]:
+    """A line and an arc tangent at their shared end, the arc's end straight above its
+    centre: determined, through module ``m``."""
+    m.clear_sketch()
+    wp = m.add_base_2d(1)
+    nm = m.add_normal_3d(1, *m.make_quaternion(1, 0, 0, 0, 1, 0))
+    g = 2
+    p0 = m.add_point_2d(g, 0, 0, wp)
+    m.dragged(g, p0, wp)
+    p1 = m.add_point_2d(g, 10, 0.5, wp)
+    line = m.add_line_2d(g, p0, p1, wp)
+    m.horizontal(g, line, wp)
+    m.distance(g, p0, p1, 10, wp)
+    c = m.add_point_2d(g, 10.5, 5, wp)
+    start = m.add_point_2d(g, 10, 0.5, wp)  # where p1 is, so the tangent finds the shared end
+    end = m.add_point_2d(g, 11, 11, wp)
+    arc = m.add_arc(g, nm, c, start, end, wp)
+    m.coincident(g, p1, start, wp)
+    m.tangent(g, arc, line, wp)
+    m.diameter(g, arc, 10)
+    m.vertical(g, c, wp, end)
+    res = m.solve_sketch(g, False)
+    assert res["result"] == 0, res
+    out = [float(res["dof"])]
+    for p in (p1, c, start, end):
+        out += [m.get_param_value(p["param"][0]), m.get_param_value(p["param"][1])]
+    return out
+
+
+def build_mirrors(m: Any) -> List[float]:
+    """Angle, length difference, horizontal symmetry and a length ratio: determined."""
+    m.clear_sketch()
+    wp = m.add_base_2d(1)
+    g = 2
+    p0 = m.add_point_2d(g, 0, 0, wp)
+    m.dragged(g, p0, wp)
+    p1 = m.add_point_2d(g, 9, 0.5, wp)
+    p2 = m.add_point_2d(g, 10, 6, wp)
+    l1 = m.add_line_2d(g, p0, p1, wp)
+    l2 = m.add_line_2d(g, p0, p2, wp)
+    m.horizontal(g, l1, wp)
+    m.distance(g, p0, p1, 10, wp)
+    m.angle(g, l1, l2, 30, wp)
+    m.length_diff(g, l2, l1, 2, wp)
+    p3 = m.add_point_2d(g, -9, 5, wp)
+    m.symmetric_h(g, p2, p3, wp)
+    p4 = m.add_point_2d(g, -9, 11, wp)
+    l3 = m.add_line_2d(g, p3, p4, wp)
+    m.vertical(g, l3, wp)
+    m.ratio(g, l3, l1, 0.5, wp)
+    res = m.solve_sketch(g, False)
+    assert res["result"] == 0, res
+    out = [float(res["dof"])]
+    for p in (p1, p2, p3, p4):
+        out += [m.get_param_value(p["param"][0]), m.get_param_value(p["param"][1])]
+    return out
+
+
+def test_tangent_arc_same_as_slvs() -> None:
+    ours = build_tangent_arc(lslvs)
+    # Tangent to the horizontal line at (10, 0): the centre straight above, radius 5.
+    assert ours == pytest.approx([0, 10, 0, 10, 5, 10, 0, 10, 10], abs=1e-9)
+    slvs = pytest.importorskip("slvs")
+    assert ours == pytest.approx(build_tangent_arc(slvs), abs=1e-6)
+
+
+def test_mirrors_same_as_slvs() -> None:
+    ours = build_mirrors(lslvs)
+    c, s = math.cos(math.radians(30)), math.sin(math.radians(30))
+    x2, y2 = 12 * c, 12 * s
+    assert ours == pytest.approx([0, 10, 0, x2, y2, -x2, y2, -x2, y2 + 5], abs=1e-9)
+    slvs = pytest.importorskip("slvs")
+    assert ours == pytest.approx(build_mirrors(slvs), abs=1e-6)
