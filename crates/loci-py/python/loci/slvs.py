@@ -336,11 +336,11 @@ def _add(
     return _entity(h, grouph, type_, wrkpl, point, normal, distance, param)
 
 
-def add_point_2d(grouph: int, u: float, v: float, wp: Slvs_Entity) -> Slvs_Entity:
-    """A point at (u, v) in workplane ``wp``."""
-    if wp["type"] != _WP:
-        _want_wp(wp)
-    w = wp["h"]
+def add_point_2d(grouph: int, u: float, v: float, workplane: Slvs_Entity) -> Slvs_Entity:
+    """A point at (u, v) in workplane ``workplane``."""
+    if workplane["type"] != _WP:
+        _want_wp(workplane)
+    w = workplane["h"]
     h, pu, pv = _m.add_point_2d(grouph, w, u, v)
     return {
         "h": h,
@@ -359,10 +359,10 @@ def add_point_3d(grouph: int, x: float, y: float, z: float) -> Slvs_Entity:
     return _add(grouph, _P3, values=(x, y, z))
 
 
-def add_normal_2d(grouph: int, wp: Slvs_Entity) -> Slvs_Entity:
-    """The normal of workplane ``wp``."""
-    _want_wp(wp)
-    return _add(grouph, _N2, wp["h"])
+def add_normal_2d(grouph: int, workplane: Slvs_Entity) -> Slvs_Entity:
+    """The normal of workplane ``workplane``."""
+    _want_wp(workplane)
+    return _add(grouph, _N2, workplane["h"])
 
 
 def add_normal_3d(grouph: int, qw: float, qx: float, qy: float, qz: float) -> Slvs_Entity:
@@ -370,19 +370,19 @@ def add_normal_3d(grouph: int, qw: float, qx: float, qy: float, qz: float) -> Sl
     return _add(grouph, _N3, values=(qw, qx, qy, qz))
 
 
-def add_distance(grouph: int, d: float, wp: Slvs_Entity) -> Slvs_Entity:
-    """A distance entity (a circle's radius) of value ``d``."""
-    _want_wp(wp)
-    return _add(grouph, _DIST, wp["h"], values=(d,))
+def add_distance(grouph: int, value: float, workplane: Slvs_Entity) -> Slvs_Entity:
+    """A distance entity (a circle's radius) of value ``value``."""
+    _want_wp(workplane)
+    return _add(grouph, _DIST, workplane["h"], values=(value,))
 
 
-def add_line_2d(grouph: int, p1: Slvs_Entity, p2: Slvs_Entity, wp: Slvs_Entity) -> Slvs_Entity:
-    """A line segment between two 2D points in ``wp``."""
-    if wp["type"] != _WP or p1["type"] != _P2 or p2["type"] != _P2:
-        _want_wp(wp)
-        _want_p2(p1, "ptA")
-        _want_p2(p2, "ptB")
-    w, a, b = wp["h"], p1["h"], p2["h"]
+def add_line_2d(grouph: int, ptA: Slvs_Entity, ptB: Slvs_Entity, workplane: Slvs_Entity) -> Slvs_Entity:
+    """A line segment between two 2D points in ``workplane``."""
+    if workplane["type"] != _WP or ptA["type"] != _P2 or ptB["type"] != _P2:
+        _want_wp(workplane)
+        _want_p2(ptA, "ptA")
+        _want_p2(ptB, "ptB")
+    w, a, b = workplane["h"], ptA["h"], ptB["h"]
     h = _m.add_line(grouph, w, a, b)
     return {
         "h": h,
@@ -396,63 +396,63 @@ def add_line_2d(grouph: int, p1: Slvs_Entity, p2: Slvs_Entity, wp: Slvs_Entity) 
     }
 
 
-def add_line_3d(grouph: int, p1: Slvs_Entity, p2: Slvs_Entity) -> Slvs_Entity:
+def add_line_3d(grouph: int, ptA: Slvs_Entity, ptB: Slvs_Entity) -> Slvs_Entity:
     """A line segment between two 3D points."""
-    if not (p1["type"] == _P3):
-        raise ModelError(f"ptA argument is entity {p1['h']}, not a 3d point")
-    if not (p2["type"] == _P3):
-        raise ModelError(f"ptB argument is entity {p2['h']}, not a 3d point")
-    return _add(grouph, _LINE, 0, (p1["h"], p2["h"], 0, 0))
+    if not (ptA["type"] == _P3):
+        raise ModelError(f"ptA argument is entity {ptA['h']}, not a 3d point")
+    if not (ptB["type"] == _P3):
+        raise ModelError(f"ptB argument is entity {ptB['h']}, not a 3d point")
+    return _add(grouph, _LINE, 0, (ptA["h"], ptB["h"], 0, 0))
 
 
 def add_cubic(
     grouph: int,
-    p1: Slvs_Entity,
-    p2: Slvs_Entity,
-    p3: Slvs_Entity,
-    p4: Slvs_Entity,
-    wp: Slvs_Entity,
+    ptA: Slvs_Entity,
+    ptB: Slvs_Entity,
+    ptC: Slvs_Entity,
+    ptD: Slvs_Entity,
+    workplane: Slvs_Entity,
 ) -> Slvs_Entity:
-    """A cubic Bezier through four 2D control points in ``wp``."""
-    _want_wp(wp)
-    for p, n in ((p1, "ptA"), (p2, "ptB"), (p3, "ptC"), (p4, "ptD")):
+    """A cubic Bezier through four 2D control points in ``workplane``."""
+    _want_wp(workplane)
+    for p, n in ((ptA, "ptA"), (ptB, "ptB"), (ptC, "ptC"), (ptD, "ptD")):
         _want_p2(p, n)
-    return _add(grouph, _CUBIC, wp["h"], (p1["h"], p2["h"], p3["h"], p4["h"]))
+    return _add(grouph, _CUBIC, workplane["h"], (ptA["h"], ptB["h"], ptC["h"], ptD["h"]))
 
 
 def add_arc(
     grouph: int,
-    nm: Slvs_Entity,
-    ct: Slvs_Entity,
+    normal: Slvs_Entity,
+    center: Slvs_Entity,
     start: Slvs_Entity,
     end: Slvs_Entity,
-    wp: Slvs_Entity,
+    workplane: Slvs_Entity,
 ) -> Slvs_Entity:
-    """An arc about ``ct``, counter-clockwise from ``start`` to ``end``, in ``wp``."""
-    _want_wp(wp)
-    if not (nm["type"] == _N3):
-        raise ModelError(f"normal argument is entity {nm['h']}, not a 3d normal")
-    _want_p2(ct, "center")
+    """An arc about ``center``, counter-clockwise from ``start`` to ``end``, in ``workplane``."""
+    _want_wp(workplane)
+    if not (normal["type"] == _N3):
+        raise ModelError(f"normal argument is entity {normal['h']}, not a 3d normal")
+    _want_p2(center, "center")
     _want_p2(start, "start")
     _want_p2(end, "end")
-    return _add(grouph, _ARC, wp["h"], (ct["h"], start["h"], end["h"], 0), nm["h"])
+    return _add(grouph, _ARC, workplane["h"], (center["h"], start["h"], end["h"], 0), normal["h"])
 
 
 def add_circle(
     grouph: int,
-    nm: Slvs_Entity,
-    ct: Slvs_Entity,
+    normal: Slvs_Entity,
+    center: Slvs_Entity,
     radius: Slvs_Entity,
-    wp: Slvs_Entity,
+    workplane: Slvs_Entity,
 ) -> Slvs_Entity:
-    """A circle about ``ct`` whose radius is the distance entity ``radius``, in ``wp``."""
-    _want_wp(wp)
-    if not (nm["type"] == _N3):
-        raise ModelError(f"normal argument is entity {nm['h']}, not a 3d normal")
-    _want_p2(ct, "center")
+    """A circle about ``center`` whose radius is the distance entity ``radius``, in ``workplane``."""
+    _want_wp(workplane)
+    if not (normal["type"] == _N3):
+        raise ModelError(f"normal argument is entity {normal['h']}, not a 3d normal")
+    _want_p2(center, "center")
     if not (radius["type"] == _DIST):
         raise ModelError(f"radius argument is entity {radius['h']}, not a distance")
-    return _add(grouph, _CIRCLE, wp["h"], (ct["h"], 0, 0, 0), nm["h"], radius["h"])
+    return _add(grouph, _CIRCLE, workplane["h"], (center["h"], 0, 0, 0), normal["h"], radius["h"])
 
 
 def add_workplane(grouph: int, origin: Slvs_Entity, nm: Slvs_Entity) -> Slvs_Entity:
@@ -472,14 +472,14 @@ def add_base_2d(grouph: int) -> Slvs_Entity:
 def add_constraint(
     grouph: int,
     c_type: int,
-    wp: Slvs_Entity,
-    v: float,
-    p1: Slvs_Entity = E_NONE,
-    p2: Slvs_Entity = E_NONE,
-    e1: Slvs_Entity = E_NONE,
-    e2: Slvs_Entity = E_NONE,
-    e3: Slvs_Entity = E_NONE,
-    e4: Slvs_Entity = E_NONE,
+    workplane: Slvs_Entity,
+    val: float,
+    ptA: Slvs_Entity = E_NONE,
+    ptB: Slvs_Entity = E_NONE,
+    entityA: Slvs_Entity = E_NONE,
+    entityB: Slvs_Entity = E_NONE,
+    entityC: Slvs_Entity = E_NONE,
+    entityD: Slvs_Entity = E_NONE,
     other: int = 0,
     other2: int = 0,
 ) -> Slvs_Constraint:
@@ -490,14 +490,14 @@ def add_constraint(
     h = _m.add_constraint(
         grouph,
         c_type,
-        wp["h"],
-        v,
-        p1["h"],
-        p2["h"],
-        e1["h"],
-        e2["h"],
-        e3["h"],
-        e4["h"],
+        workplane["h"],
+        val,
+        ptA["h"],
+        ptB["h"],
+        entityA["h"],
+        entityB["h"],
+        entityC["h"],
+        entityD["h"],
         other,
         other2,
     )
@@ -505,14 +505,14 @@ def add_constraint(
         "h": h,
         "group": grouph,
         "type": c_type,
-        "wrkpl": wp["h"],
-        "valA": float(v),
-        "ptA": p1["h"],
-        "ptB": p2["h"],
-        "entityA": e1["h"],
-        "entityB": e2["h"],
-        "entityC": e3["h"],
-        "entityD": e4["h"],
+        "wrkpl": workplane["h"],
+        "valA": float(val),
+        "ptA": ptA["h"],
+        "ptB": ptB["h"],
+        "entityA": entityA["h"],
+        "entityB": entityB["h"],
+        "entityC": entityC["h"],
+        "entityD": entityD["h"],
         "other": other,
         "other2": other2,
     }
@@ -522,48 +522,49 @@ C = ConstraintType
 
 
 def coincident(
-    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+    grouph: int, entityA: Slvs_Entity, entityB: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
     """Two points coincide, or a point lies on a workplane, line, circle or arc."""
-    if _is_point(e1) and _is_point(e2):
-        return add_constraint(grouph, C.POINTS_COINCIDENT, wp, 0.0, e1, e2)
-    if _is_point(e1) and _is_wp(e2):
-        return add_constraint(grouph, C.PT_IN_PLANE, E_FREE_IN_3D, 0.0, e1, E_NONE, e2)
-    if _is_point(e1) and _is_line(e2):
-        return add_constraint(grouph, C.PT_ON_LINE, wp, 0.0, e1, E_NONE, e2)
-    if _is_point(e1) and _is_round(e2):
-        return add_constraint(grouph, C.PT_ON_CIRCLE, wp, 0.0, e1, E_NONE, e2)
-    raise ModelError(f"invalid arguments for coincident: entities {e1['h']} and {e2['h']}")
+    if _is_point(entityA) and _is_point(entityB):
+        return add_constraint(grouph, C.POINTS_COINCIDENT, workplane, 0.0, entityA, entityB)
+    if _is_point(entityA) and _is_wp(entityB):
+        return add_constraint(grouph, C.PT_IN_PLANE, E_FREE_IN_3D, 0.0, entityA, E_NONE, entityB)
+    if _is_point(entityA) and _is_line(entityB):
+        return add_constraint(grouph, C.PT_ON_LINE, workplane, 0.0, entityA, E_NONE, entityB)
+    if _is_point(entityA) and _is_round(entityB):
+        return add_constraint(grouph, C.PT_ON_CIRCLE, workplane, 0.0, entityA, E_NONE, entityB)
+    raise ModelError(f"invalid arguments for coincident: entities {entityA['h']} and {entityB['h']}")
 
 
 def distance(
     grouph: int,
-    e1: Slvs_Entity,
-    e2: Slvs_Entity,
+    entityA: Slvs_Entity,
+    entityB: Slvs_Entity,
     value: float,
-    wp: Slvs_Entity = E_FREE_IN_3D,
+    workplane: Slvs_Entity,
 ) -> Slvs_Constraint:
-    """The distance between two points, from a point to a workplane, or to a line."""
-    if _is_point(e1) and _is_point(e2):
-        return add_constraint(grouph, C.PT_PT_DISTANCE, wp, value, e1, e2)
-    if _is_point(e1) and _is_wp(e2) and _free(wp):
-        return add_constraint(grouph, C.PT_PLANE_DISTANCE, e2, value, e1, E_NONE, e2)
-    if _is_point(e1) and _is_line(e2):
-        return add_constraint(grouph, C.PT_LINE_DISTANCE, wp, value, e1, E_NONE, e2)
-    raise ModelError(f"invalid arguments for distance: entities {e1['h']} and {e2['h']}")
+    """The distance between two points, from a point to a workplane (``workplane`` free in
+    3D), or to a line."""
+    if _is_point(entityA) and _is_point(entityB):
+        return add_constraint(grouph, C.PT_PT_DISTANCE, workplane, value, entityA, entityB)
+    if _is_point(entityA) and _is_wp(entityB) and _free(workplane):
+        return add_constraint(grouph, C.PT_PLANE_DISTANCE, entityB, value, entityA, E_NONE, entityB)
+    if _is_point(entityA) and _is_line(entityB):
+        return add_constraint(grouph, C.PT_LINE_DISTANCE, workplane, value, entityA, E_NONE, entityB)
+    raise ModelError(f"invalid arguments for distance: entities {entityA['h']} and {entityB['h']}")
 
 
 def equal(
-    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+    grouph: int, entityA: Slvs_Entity, entityB: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
     """Two lines of equal length, a line as long as an arc, or two equal radii."""
-    if _is_line(e1) and _is_line(e2):
-        return add_constraint(grouph, C.EQUAL_LENGTH_LINES, wp, 0.0, E_NONE, E_NONE, e1, e2)
-    if _is_line(e1) and _is_round(e2):
-        return add_constraint(grouph, C.EQUAL_LINE_ARC_LEN, wp, 0.0, E_NONE, E_NONE, e1, e2)
-    if _is_round(e1) and _is_round(e2):
-        return add_constraint(grouph, C.EQUAL_RADIUS, wp, 0.0, E_NONE, E_NONE, e1, e2)
-    raise ModelError(f"invalid arguments for equal: entities {e1['h']} and {e2['h']}")
+    if _is_line(entityA) and _is_line(entityB):
+        return add_constraint(grouph, C.EQUAL_LENGTH_LINES, workplane, 0.0, E_NONE, E_NONE, entityA, entityB)
+    if _is_line(entityA) and _is_round(entityB):
+        return add_constraint(grouph, C.EQUAL_LINE_ARC_LEN, workplane, 0.0, E_NONE, E_NONE, entityA, entityB)
+    if _is_round(entityA) and _is_round(entityB):
+        return add_constraint(grouph, C.EQUAL_RADIUS, workplane, 0.0, E_NONE, E_NONE, entityA, entityB)
+    raise ModelError(f"invalid arguments for equal: entities {entityA['h']} and {entityB['h']}")
 
 
 def _lines(*es: Slvs_Entity) -> bool:
@@ -584,173 +585,173 @@ def _plane_or_free(wp: Slvs_Entity) -> bool:
 
 def equal_angle(
     grouph: int,
-    e1: Slvs_Entity,
-    e2: Slvs_Entity,
-    e3: Slvs_Entity,
-    e4: Slvs_Entity,
-    wp: Slvs_Entity = E_FREE_IN_3D,
+    entityA: Slvs_Entity,
+    entityB: Slvs_Entity,
+    entityC: Slvs_Entity,
+    entityD: Slvs_Entity,
+    workplane: Slvs_Entity = E_FREE_IN_3D,
 ) -> Slvs_Constraint:
-    """The angle between lines e1 and e2 equals the angle between e3 and e4."""
-    if not (_lines(e1, e2, e3, e4) and _plane_or_free(wp)):
+    """The angle between lines entityA and entityB equals the angle between entityC and entityD."""
+    if not (_lines(entityA, entityB, entityC, entityD) and _plane_or_free(workplane)):
         raise ModelError("invalid arguments for equal_angle")
-    return add_constraint(grouph, C.EQUAL_ANGLE, wp, 0.0, E_NONE, E_NONE, e1, e2, e3, e4)
+    return add_constraint(grouph, C.EQUAL_ANGLE, workplane, 0.0, E_NONE, E_NONE, entityA, entityB, entityC, entityD)
 
 
 def equal_point_to_line(
     grouph: int,
-    e1: Slvs_Entity,
-    e2: Slvs_Entity,
-    e3: Slvs_Entity,
-    e4: Slvs_Entity,
-    wp: Slvs_Entity = E_FREE_IN_3D,
+    entityA: Slvs_Entity,
+    entityB: Slvs_Entity,
+    entityC: Slvs_Entity,
+    entityD: Slvs_Entity,
+    workplane: Slvs_Entity = E_FREE_IN_3D,
 ) -> Slvs_Constraint:
-    """The distance from point e1 to line e2 equals that from point e3 to line e4."""
-    ok = _is_point(e1) and _is_line(e2) and _is_point(e3) and _is_line(e4)
-    if not (ok and _plane_or_free(wp)):
+    """The distance from point entityA to line entityB equals that from point entityC to line entityD."""
+    ok = _is_point(entityA) and _is_line(entityB) and _is_point(entityC) and _is_line(entityD)
+    if not (ok and _plane_or_free(workplane)):
         raise ModelError("invalid arguments for equal_point_to_line")
-    return add_constraint(grouph, C.EQ_PT_LN_DISTANCES, wp, 0.0, e1, e2, e3, e4)
+    return add_constraint(grouph, C.EQ_PT_LN_DISTANCES, workplane, 0.0, entityA, entityB, entityC, entityD)
 
 
 def ratio(
     grouph: int,
-    e1: Slvs_Entity,
-    e2: Slvs_Entity,
+    entityA: Slvs_Entity,
+    entityB: Slvs_Entity,
     value: float,
-    wp: Slvs_Entity = E_FREE_IN_3D,
+    workplane: Slvs_Entity = E_FREE_IN_3D,
 ) -> Slvs_Constraint:
-    """The length of line e1 over that of line e2."""
-    if not _two_lines(e1, e2, wp):
+    """The length of line entityA over that of line entityB."""
+    if not _two_lines(entityA, entityB, workplane):
         raise ModelError("invalid arguments for ratio")
-    return add_constraint(grouph, C.LENGTH_RATIO, wp, value, E_NONE, E_NONE, e1, e2)
+    return add_constraint(grouph, C.LENGTH_RATIO, workplane, value, E_NONE, E_NONE, entityA, entityB)
 
 
 def symmetric(
     grouph: int,
-    e1: Slvs_Entity,
-    e2: Slvs_Entity,
-    e3: Slvs_Entity = E_NONE,
-    wp: Slvs_Entity = E_FREE_IN_3D,
+    entityA: Slvs_Entity,
+    entityB: Slvs_Entity,
+    entityC: Slvs_Entity = E_NONE,
+    workplane: Slvs_Entity = E_FREE_IN_3D,
 ) -> Slvs_Constraint:
-    """Two points symmetric about a workplane (e3) or, in ``wp``, about a line (e3)."""
-    if _is_point(e1) and _is_point(e2) and _is_wp(e3) and _free(wp):
-        plane = e3 if e1["type"] == _P2 else E_FREE_IN_3D
-        return add_constraint(grouph, C.SYMMETRIC, plane, 0.0, e1, e2, e3)
-    if e1["type"] == _P2 and e2["type"] == _P2 and _is_line(e3):
-        if not (not _free(wp)):
+    """Two points symmetric about a workplane (entityC) or, in ``workplane``, about a line (entityC)."""
+    if _is_point(entityA) and _is_point(entityB) and _is_wp(entityC) and _free(workplane):
+        plane = entityC if entityA["type"] == _P2 else E_FREE_IN_3D
+        return add_constraint(grouph, C.SYMMETRIC, plane, 0.0, entityA, entityB, entityC)
+    if entityA["type"] == _P2 and entityB["type"] == _P2 and _is_line(entityC):
+        if _free(workplane):
             raise ModelError("3d workplane given for a 2d constraint")
-        return add_constraint(grouph, C.SYMMETRIC_LINE, wp, 0.0, e1, e2, e3)
-    raise ModelError(f"invalid arguments for symmetric: entities {e1['h']}, {e2['h']}, {e3['h']}")
+        return add_constraint(grouph, C.SYMMETRIC_LINE, workplane, 0.0, entityA, entityB, entityC)
+    raise ModelError(f"invalid arguments for symmetric: entities {entityA['h']}, {entityB['h']}, {entityC['h']}")
 
 
 def symmetric_h(
-    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity
+    grouph: int, ptA: Slvs_Entity, ptB: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
-    """Two points symmetric about the vertical axis of ``wp`` (mirrored left to right)."""
-    if not (not _free(wp)):
+    """Two points symmetric about the vertical axis of ``workplane`` (mirrored left to right)."""
+    if _free(workplane):
         raise ModelError("3d workplane given for a 2d constraint")
-    if not (e1["type"] == _P2 and e2["type"] == _P2):
+    if not (ptA["type"] == _P2 and ptB["type"] == _P2):
         raise ModelError("invalid arguments for symmetric_h")
-    return add_constraint(grouph, C.SYMMETRIC_HORIZ, wp, 0.0, e1, e2)
+    return add_constraint(grouph, C.SYMMETRIC_HORIZ, workplane, 0.0, ptA, ptB)
 
 
 def symmetric_v(
-    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity
+    grouph: int, ptA: Slvs_Entity, ptB: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
-    """Two points symmetric about the horizontal axis of ``wp`` (mirrored top to bottom)."""
-    if not (not _free(wp)):
+    """Two points symmetric about the horizontal axis of ``workplane`` (mirrored top to bottom)."""
+    if _free(workplane):
         raise ModelError("3d workplane given for a 2d constraint")
-    if not (e1["type"] == _P2 and e2["type"] == _P2):
+    if not (ptA["type"] == _P2 and ptB["type"] == _P2):
         raise ModelError("invalid arguments for symmetric_v")
-    return add_constraint(grouph, C.SYMMETRIC_VERT, wp, 0.0, e1, e2)
+    return add_constraint(grouph, C.SYMMETRIC_VERT, workplane, 0.0, ptA, ptB)
 
 
 def midpoint(
-    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+    grouph: int, ptA: Slvs_Entity, ptB: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
-    """Point e1 is the midpoint of line e2."""
-    if not (_is_point(e1) and _is_line(e2) and _plane_or_free(wp)):
+    """Point ptA is the midpoint of line ptB."""
+    if not (_is_point(ptA) and _is_line(ptB) and _plane_or_free(workplane)):
         raise ModelError("invalid arguments for midpoint")
-    return add_constraint(grouph, C.AT_MIDPOINT, wp, 0.0, e1, E_NONE, e2)
+    return add_constraint(grouph, C.AT_MIDPOINT, workplane, 0.0, ptA, E_NONE, ptB)
 
 
 def horizontal(
-    grouph: int, e1: Slvs_Entity, wp: Slvs_Entity, e2: Slvs_Entity = E_NONE
+    grouph: int, entityA: Slvs_Entity, workplane: Slvs_Entity, entityB: Slvs_Entity = E_NONE
 ) -> Slvs_Constraint:
-    """A line (or the two points e1, e2) horizontal in ``wp``."""
-    if not (not _free(wp)):
+    """A line (or the two points entityA, entityB) horizontal in ``workplane``."""
+    if _free(workplane):
         raise ModelError("horizontal is not supported in 3d")
-    if _is_line(e1):
-        return add_constraint(grouph, C.HORIZONTAL, wp, 0.0, E_NONE, E_NONE, e1)
-    if not (e1["type"] == _P2 and e2["type"] == _P2):
+    if _is_line(entityA):
+        return add_constraint(grouph, C.HORIZONTAL, workplane, 0.0, E_NONE, E_NONE, entityA)
+    if not (entityA["type"] == _P2 and entityB["type"] == _P2):
         raise ModelError("invalid arguments for horizontal")
-    return add_constraint(grouph, C.HORIZONTAL, wp, 0.0, e1, e2)
+    return add_constraint(grouph, C.HORIZONTAL, workplane, 0.0, entityA, entityB)
 
 
 def vertical(
-    grouph: int, e1: Slvs_Entity, wp: Slvs_Entity, e2: Slvs_Entity = E_NONE
+    grouph: int, entityA: Slvs_Entity, workplane: Slvs_Entity, entityB: Slvs_Entity = E_NONE
 ) -> Slvs_Constraint:
-    """A line (or the two points e1, e2) vertical in ``wp``."""
-    if not (not _free(wp)):
+    """A line (or the two points entityA, entityB) vertical in ``workplane``."""
+    if _free(workplane):
         raise ModelError("vertical is not supported in 3d")
-    if _is_line(e1):
-        return add_constraint(grouph, C.VERTICAL, wp, 0.0, E_NONE, E_NONE, e1)
-    if not (e1["type"] == _P2 and e2["type"] == _P2):
+    if _is_line(entityA):
+        return add_constraint(grouph, C.VERTICAL, workplane, 0.0, E_NONE, E_NONE, entityA)
+    if not (entityA["type"] == _P2 and entityB["type"] == _P2):
         raise ModelError("invalid arguments for vertical")
-    return add_constraint(grouph, C.VERTICAL, wp, 0.0, e1, e2)
+    return add_constraint(grouph, C.VERTICAL, workplane, 0.0, entityA, entityB)
 
 
-def diameter(grouph: int, e1: Slvs_Entity, value: float) -> Slvs_Constraint:
+def diameter(grouph: int, entityA: Slvs_Entity, value: float) -> Slvs_Constraint:
     """The diameter of a circle or arc."""
-    if not (_is_round(e1)):
-        raise ModelError(f"invalid arguments for diameter: entity {e1['h']}")
-    return add_constraint(grouph, C.DIAMETER, E_FREE_IN_3D, value, E_NONE, E_NONE, e1)
+    if not (_is_round(entityA)):
+        raise ModelError(f"invalid arguments for diameter: entity {entityA['h']}")
+    return add_constraint(grouph, C.DIAMETER, E_FREE_IN_3D, value, E_NONE, E_NONE, entityA)
 
 
-def same_orientation(grouph: int, e1: Slvs_Entity, e2: Slvs_Entity) -> Slvs_Constraint:
+def same_orientation(grouph: int, entityA: Slvs_Entity, entityB: Slvs_Entity) -> Slvs_Constraint:
     """Two 3D normals have the same orientation."""
-    if not (e1["type"] == _N3 and e2["type"] == _N3):
+    if not (entityA["type"] == _N3 and entityB["type"] == _N3):
         raise ModelError("invalid arguments for same_orientation")
-    return add_constraint(grouph, C.SAME_ORIENTATION, E_FREE_IN_3D, 0.0, E_NONE, E_NONE, e1, e2)
+    return add_constraint(grouph, C.SAME_ORIENTATION, E_FREE_IN_3D, 0.0, E_NONE, E_NONE, entityA, entityB)
 
 
 def angle(
     grouph: int,
-    e1: Slvs_Entity,
-    e2: Slvs_Entity,
+    entityA: Slvs_Entity,
+    entityB: Slvs_Entity,
     value: float,
-    wp: Slvs_Entity = E_FREE_IN_3D,
+    workplane: Slvs_Entity = E_FREE_IN_3D,
     inverse: bool = False,
 ) -> Slvs_Constraint:
     """The angle between two lines, in degrees (``inverse``: its supplement)."""
-    if not _two_lines(e1, e2, wp):
+    if not _two_lines(entityA, entityB, workplane):
         raise ModelError("invalid arguments for angle")
     return add_constraint(
-        grouph, C.ANGLE, wp, value, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, int(inverse)
+        grouph, C.ANGLE, workplane, value, E_NONE, E_NONE, entityA, entityB, E_NONE, E_NONE, int(inverse)
     )
 
 
 def perpendicular(
     grouph: int,
-    e1: Slvs_Entity,
-    e2: Slvs_Entity,
-    wp: Slvs_Entity = E_FREE_IN_3D,
+    entityA: Slvs_Entity,
+    entityB: Slvs_Entity,
+    workplane: Slvs_Entity = E_FREE_IN_3D,
     inverse: bool = False,
 ) -> Slvs_Constraint:
     """Two lines are perpendicular."""
-    if not _two_lines(e1, e2, wp):
+    if not _two_lines(entityA, entityB, workplane):
         raise ModelError("invalid arguments for perpendicular")
     return add_constraint(
-        grouph, C.PERPENDICULAR, wp, 0.0, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, int(inverse)
+        grouph, C.PERPENDICULAR, workplane, 0.0, E_NONE, E_NONE, entityA, entityB, E_NONE, E_NONE, int(inverse)
     )
 
 
 def parallel(
-    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+    grouph: int, entityA: Slvs_Entity, entityB: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
     """Two lines are parallel."""
-    if not _two_lines(e1, e2, wp):
+    if not _two_lines(entityA, entityB, workplane):
         raise ModelError("invalid arguments for parallel")
-    return add_constraint(grouph, C.PARALLEL, wp, 0.0, E_NONE, E_NONE, e1, e2)
+    return add_constraint(grouph, C.PARALLEL, workplane, 0.0, E_NONE, E_NONE, entityA, entityB)
 
 
 def _same(a: int, b: int) -> bool:
@@ -766,72 +767,72 @@ def _ends(e: Slvs_Entity) -> Tuple[int, int]:
 
 
 def tangent(
-    grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D
+    grouph: int, entityA: Slvs_Entity, entityB: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D
 ) -> Slvs_Constraint:
     """An arc or cubic tangent to a line, or two curves tangent, where they share an end
     (which end is found from where the points are now)."""
     curve = (_ARC, _CUBIC)
-    if e1["type"] == _ARC and _is_line(e2) or e1["type"] == _CUBIC and _is_line(e2):
-        is_arc = e1["type"] == _ARC
+    if entityA["type"] == _ARC and _is_line(entityB) or entityA["type"] == _CUBIC and _is_line(entityB):
+        is_arc = entityA["type"] == _ARC
         if is_arc:
-            if not (not _free(wp)):
+            if _free(workplane):
                 raise ModelError("3d workplane given for a 2d constraint")
-        s, f = _ends(e1)
-        l0, l1 = e2["point"][0], e2["point"][1]
+        s, f = _ends(entityA)
+        l0, l1 = entityB["point"][0], entityB["point"][1]
         if _same(l0, s) or _same(l1, s):
             other = 0
         elif _same(l0, f) or _same(l1, f):
             other = 1
         else:
             raise ModelError(
-                f"entities {e1['h']} and {e2['h']} must share an end before they are made tangent"
+                f"entities {entityA['h']} and {entityB['h']} must share an end before they are made tangent"
             )
         kind = C.ARC_LINE_TANGENT if is_arc else C.CUBIC_LINE_TANGENT
-        return add_constraint(grouph, kind, wp, 0.0, E_NONE, E_NONE, e1, e2, E_NONE, E_NONE, other)
-    if e1["type"] in curve and e2["type"] in curve:
-        if not (not _free(wp)):
+        return add_constraint(grouph, kind, workplane, 0.0, E_NONE, E_NONE, entityA, entityB, E_NONE, E_NONE, other)
+    if entityA["type"] in curve and entityB["type"] in curve:
+        if _free(workplane):
             raise ModelError("3d workplane given for a 2d constraint")
-        (as_, af), (bs, bf) = _ends(e1), _ends(e2)
+        (as_, af), (bs, bf) = _ends(entityA), _ends(entityB)
         for o1, o2, p, q in ((0, 0, as_, bs), (0, 1, as_, bf), (1, 0, af, bs), (1, 1, af, bf)):
             if _same(p, q):
                 return add_constraint(
-                    grouph, C.CURVE_CURVE_TANGENT, wp, 0.0, E_NONE, E_NONE, e1, e2,
+                    grouph, C.CURVE_CURVE_TANGENT, workplane, 0.0, E_NONE, E_NONE, entityA, entityB,
                     E_NONE, E_NONE, o1, o2,
                 )
         raise ModelError(
-            f"entities {e1['h']} and {e2['h']} must share an end before they are made tangent"
+            f"entities {entityA['h']} and {entityB['h']} must share an end before they are made tangent"
         )
-    raise ModelError(f"invalid arguments for tangent: entities {e1['h']} and {e2['h']}")
+    raise ModelError(f"invalid arguments for tangent: entities {entityA['h']} and {entityB['h']}")
 
 
-def distance_proj(grouph: int, e1: Slvs_Entity, e2: Slvs_Entity, value: float) -> Slvs_Constraint:
+def distance_proj(grouph: int, ptA: Slvs_Entity, ptB: Slvs_Entity, value: float) -> Slvs_Constraint:
     """The distance between two points projected onto a line (the free 3D form)."""
-    if not (_is_point(e1) and _is_point(e2)):
+    if not (_is_point(ptA) and _is_point(ptB)):
         raise ModelError("invalid arguments for distance_proj")
-    return add_constraint(grouph, C.PROJ_PT_DISTANCE, E_FREE_IN_3D, value, e1, e2)
+    return add_constraint(grouph, C.PROJ_PT_DISTANCE, E_FREE_IN_3D, value, ptA, ptB)
 
 
 def length_diff(
     grouph: int,
-    Slvs_entityA: Slvs_Entity,
-    Slvs_entityB: Slvs_Entity,
+    entityA: Slvs_Entity,
+    entityB: Slvs_Entity,
     value: float,
     workplane: Slvs_Entity = E_FREE_IN_3D,
 ) -> Slvs_Constraint:
     """The length of one line less the length of another."""
-    ok = _lines(Slvs_entityA, Slvs_entityB) and _plane_or_free(workplane)
+    ok = _lines(entityA, entityB) and _plane_or_free(workplane)
     if not (ok):
         raise ModelError("invalid arguments for length_diff")
     return add_constraint(
-        grouph, C.LENGTH_DIFFERENCE, workplane, value, E_NONE, E_NONE, Slvs_entityA, Slvs_entityB
+        grouph, C.LENGTH_DIFFERENCE, workplane, value, E_NONE, E_NONE, entityA, entityB
     )
 
 
-def dragged(grouph: int, e1: Slvs_Entity, wp: Slvs_Entity = E_FREE_IN_3D) -> Slvs_Constraint:
+def dragged(grouph: int, ptA: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D) -> Slvs_Constraint:
     """The point stays where it is (a ``WHERE_DRAGGED`` constraint)."""
-    if not (_is_point(e1) and _plane_or_free(wp)):
+    if not (_is_point(ptA) and _plane_or_free(workplane)):
         raise ModelError("invalid arguments for dragged")
-    return add_constraint(grouph, C.WHERE_DRAGGED, wp, 0.0, e1)
+    return add_constraint(grouph, C.WHERE_DRAGGED, workplane, 0.0, ptA)
 
 
 def mark_dragged(ptA: Slvs_Entity) -> None:
