@@ -601,6 +601,7 @@ impl PySystem {
     /// Raises ``ModelError`` for an invalid model, ``SolveError`` when it cannot start.
     #[pyo3(signature = (group, dragged = Vec::new(), *, find_failed = true, tolerance = None,
         max_iterations = None, nearest = None))]
+    #[allow(clippy::too_many_arguments)] // Python's keyword arguments
     fn solve(
         &mut self,
         py: Python<'_>,
