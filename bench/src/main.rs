@@ -349,7 +349,7 @@ fn assembly(args: &[String]) -> Result<()> {
 }
 
 /// `loci-bench python`: a chain built and solved through the Python package (`loci.Sketch`,
-/// `loci.slvs`), through PyPI `slvs` and in Rust, side by side.
+/// `loci.slvs`), through SolveSpace's `slvs` and in Rust, side by side.
 fn python(args: &[String]) -> Result<()> {
     use loci_bench::python::{default_python, run_all, table};
     const USAGE: &str = "usage: loci-bench python [--sizes N,N,...] [--python PATH] \

@@ -1,6 +1,6 @@
 //! The Python-side cost benchmark (`loci-bench python`): one chain built and solved through
 //! `loci.Sketch` and `loci.slvs` (the Python package), through SolveSpace's own Python module
-//! (PyPI `slvs`) and in Rust through [`loci::sketch::Sketch`], in one run, with ratios.
+//! (`slvs` 3.3 from the Python Package Index) and in Rust through [`loci::sketch::Sketch`], in one run, with ratios.
 //!
 //! The chain (the same as `runners/python_chain.py` builds): points P0..Pn on a staircase,
 //! P0 fixed, segment 0 horizontal, every segment's length given and every segment
@@ -127,7 +127,7 @@ pub enum Api {
     Sketch,
     /// `loci.slvs`.
     LociSlvs,
-    /// PyPI `slvs` (SolveSpace 3.3).
+    /// SolveSpace 3.3's own module, `slvs` from the Python Package Index.
     PypiSlvs,
 }
 
@@ -228,7 +228,8 @@ fn ms(s: f64) -> String {
     }
 }
 
-/// The table, with each path's total against Rust's and PyPI slvs's against loci.slvs's.
+/// The table, with each path's total against Rust's, and SolveSpace's module's against
+/// `loci.slvs`'s.
 #[must_use]
 pub fn table(rows: &[Row]) -> String {
     let mut out = String::from(
