@@ -1,7 +1,7 @@
 """Type stubs of loci's native module (see the package docstring)."""
 
 from os import PathLike
-from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -33,6 +33,7 @@ def loads(text: str) -> Union["System", "Sketch", "Assembly"]:
 
 # ------------------------------------------------------------------ the SolveSpace model
 
+@final
 class SolveResult:
     """The result of ``System.solve``."""
 
@@ -61,6 +62,7 @@ class SolveResult:
     def equations(self) -> int: ...
     def __bool__(self) -> bool: ...
 
+@final
 class CheckResult:
     """The result of ``System.check`` (a diagnosis that changes nothing)."""
 
@@ -87,6 +89,7 @@ class CheckResult:
     def to_dict(self) -> Dict[str, Any]:
         """The whole diagnosis as plain dicts and lists."""
 
+@final
 class System:
     """The SolveSpace model: parameters, entities and constraints in groups, by handle."""
 
@@ -220,6 +223,7 @@ class _Shape:
     def constraints(self) -> List["SketchConstraint"]: ...
     def __hash__(self) -> int: ...
 
+@final
 class Point(_Shape):
     """A point of a sketch; coordinates are read from the sketch when asked."""
 
@@ -232,6 +236,7 @@ class Point(_Shape):
     @xy.setter
     def xy(self, to: _XY) -> None: ...
 
+@final
 class Line(_Shape):
     """A line between points ``a`` and ``b``."""
 
@@ -244,6 +249,7 @@ class Line(_Shape):
     @property
     def length(self) -> float: ...
 
+@final
 class Circle(_Shape):
     """A circle: ``center`` and ``radius``."""
 
@@ -252,6 +258,7 @@ class Circle(_Shape):
     @property
     def radius(self) -> float: ...
 
+@final
 class Arc(_Shape):
     """An arc, counter-clockwise from ``start`` to ``end`` about ``center``."""
 
@@ -270,6 +277,7 @@ class Arc(_Shape):
     @property
     def sweep(self) -> float: ...
 
+@final
 class Cubic(_Shape):
     """A cubic Bezier with four control points."""
 
@@ -280,6 +288,7 @@ class Cubic(_Shape):
 
 _AnyShape = Union[Point, Line, Circle, Arc, Cubic]
 
+@final
 class SketchConstraint:
     """A user constraint of a sketch."""
 
@@ -301,6 +310,7 @@ class SketchConstraint:
     def to_dict(self) -> Dict[str, Any]: ...
     def __hash__(self) -> int: ...
 
+@final
 class SketchResult:
     """The result of ``Sketch.solve``."""
 
@@ -320,6 +330,7 @@ class SketchResult:
     def residual(self) -> float: ...
     def __bool__(self) -> bool: ...
 
+@final
 class DragResult:
     """The result of one drag step."""
 
@@ -338,6 +349,7 @@ class DragResult:
     @property
     def flips_prevented(self) -> int: ...
 
+@final
 class Sketch:
     """A 2D sketch: shapes, user constraints, soft constraints and dragging."""
 
@@ -348,7 +360,7 @@ class Sketch:
     def save(self, path: _Path) -> None: ...
     def __len__(self) -> int: ...
     def __iter__(self) -> Iterator[_AnyShape]: ...
-    def __getitem__(self, name: str) -> Any: ...
+    def __getitem__(self, name: str, /) -> Any: ...
     def add_point(self, x: float, y: float, *, construction: bool = False) -> Point: ...
     def add_line(self, a: _PointArg, b: _PointArg, *, construction: bool = False) -> Line: ...
     def add_circle(self, center: _PointArg, radius: float, *, construction: bool = False) -> Circle: ...
@@ -422,6 +434,7 @@ class Sketch:
 
 _Selection = Union[str, Tuple[str, str]]
 
+@final
 class AssemblyResult:
     """The result of ``Assembly.solve``."""
 
@@ -447,6 +460,7 @@ class AssemblyResult:
     def to_dict(self) -> Dict[str, Any]: ...
     def __bool__(self) -> bool: ...
 
+@final
 class Assembly:
     """Rigid components placed by poses, related by mates and joints."""
 
@@ -492,6 +506,7 @@ class Assembly:
 
 # ------------------------------------------------------------------ the slvs drop-in's model
 
+@final
 class SlvsModel:
     """libslvs's arrays behind ``loci.slvs``."""
 
