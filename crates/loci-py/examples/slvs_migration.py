@@ -26,7 +26,7 @@ assert isinstance(result, dict)
 assert result["result"] == slvs.ResultFlag.OKAY
 x = slvs.get_param_value(p2["param"][0])
 y = slvs.get_param_value(p2["param"][1])
-print(f"crank rocker: p2 = ({x:.5f}, {y:.5f})")  # (39.54852, 61.91009), as with slvs
+print(f"crank rocker: p2 = ({x:.5f}, {y:.5f})")  # about (39.5485, 61.9101), as with slvs
 
 # What loci adds: the sketch as a loci.System, to diagnose or save as JSON.
 sys = slvs.to_system()
