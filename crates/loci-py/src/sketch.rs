@@ -646,6 +646,13 @@ impl PySketch {
         PySystem::from_system(self.inner.system().clone())
     }
 
+    /// The user constraint that wrote core constraint ``core`` (a handle from ``check()`` or
+    /// ``SketchConstraint.core``), or ``None``.
+    fn constraint_of(slf: &Bound<'_, Self>, core: u32) -> PyResult<Option<Py<SketchConstraint>>> {
+        let id = slf.borrow().inner.owner_of(loci::ConstraintId(core));
+        id.map(|id| constraint_object(slf, id.0)).transpose()
+    }
+
     /// Diagnoses the sketch's core system (its shapes' group): degrees of freedom, conflicts
     /// and redundancies, named by core constraint handle (see ``SketchConstraint.core``).
     fn check(&self, py: Python<'_>) -> PyResult<CheckResult> {

@@ -89,6 +89,12 @@ def test_conflict_is_a_result_naming_the_user_constraints() -> None:
     # Horizontal and vertical together make the line a point, which its length forbids.
     assert sorted(r.failed) == sorted([h.id, v.id, k.id])
     assert line.coords == ((0, 0), (5, 1))
+    # The diagnosis names core constraints; each maps back to the user constraint that wrote it.
+    d = s.check()
+    assert d.outcome == "inconsistent"
+    named = {s.constraint_of(c) for conflict in d.conflicting for c in conflict}
+    assert named == {h, v, k}
+    assert s.constraint_of(10_000) is None
 
 
 def test_drag_moves_the_free_end_on_its_circle() -> None:
