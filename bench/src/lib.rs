@@ -15,6 +15,7 @@ pub mod drag_peers;
 pub mod generate;
 pub mod peers;
 pub mod problem;
+pub mod python;
 pub mod report;
 pub mod run;
 pub mod setup;

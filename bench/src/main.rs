@@ -7,6 +7,7 @@
 //! loci-bench emit FAMILY VARIANT SIZE DIR
 //! loci-bench report DIR
 //! loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only]
+//! loci-bench python [--sizes N,N,...] [--python PATH] [--slvs-python PATH] [--limit S]
 //! loci-bench drag [SIZES [STEPS]] [--long] [--peers slvs,planegcs,brep|none] [--peer-limit S]
 //!                                     (sizes as 100,1000,10000; 600 steps)
 //! ```
@@ -47,6 +48,7 @@ fn real_main() -> Result<()> {
         Some("report") => return rerender(&args[1..]),
         Some("assembly") => return assembly(&args[1..]),
         Some("drag") => return drag(&args[1..]),
+        Some("python") => return python(&args[1..]),
         _ => {}
     }
     let mut quick = false;
@@ -343,6 +345,56 @@ fn assembly(args: &[String]) -> Result<()> {
         Some(&Path::new(env!("CARGO_MANIFEST_DIR"))),
     );
     print!("{}", loci_bench::assembly::table(&t));
+    Ok(())
+}
+
+/// `loci-bench python`: a chain built and solved through the Python package (`loci.Sketch`,
+/// `loci.slvs`), through SolveSpace's `slvs` and in Rust, side by side.
+fn python(args: &[String]) -> Result<()> {
+    use loci_bench::python::{default_python, run_all, table};
+    const USAGE: &str = "usage: loci-bench python [--sizes N,N,...] [--python PATH] \
+[--slvs-python PATH] [--limit SECONDS]";
+    let bench = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut sizes = vec![1_000, 10_000];
+    let mut py = default_python(bench);
+    let mut slvs_py: Option<PathBuf> = None;
+    let mut limit = 300.0;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = || {
+            it.next()
+                .with_context(|| format!("{a} needs a value\n{USAGE}"))
+        };
+        match a.as_str() {
+            "--sizes" => {
+                sizes = value()?
+                    .split(',')
+                    .map(|s| s.parse().with_context(|| format!("bad size {s}")))
+                    .collect::<Result<_>>()?;
+            }
+            "--python" => py = PathBuf::from(value()?),
+            "--slvs-python" => slvs_py = Some(PathBuf::from(value()?)),
+            "--limit" => limit = value()?.parse().context("--limit takes seconds")?,
+            other => bail!("unknown option {other}\n{USAGE}"),
+        }
+    }
+    if !py.exists() {
+        bail!(
+            "no Python with the loci package at {} (run crates/loci-py/run-tests.sh, or give --python)",
+            py.display()
+        );
+    }
+    // SolveSpace's module where loci-bench keeps it, else beside loci.
+    let slvs_py = slvs_py.unwrap_or_else(|| {
+        let venv = bench.join(".venv/bin/python");
+        if venv.exists() {
+            venv
+        } else {
+            py.clone()
+        }
+    });
+    let rows = run_all(&sizes, &py, &slvs_py, bench, Duration::from_secs_f64(limit));
+    print!("{}", table(&rows));
     Ok(())
 }
 
