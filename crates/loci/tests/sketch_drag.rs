@@ -289,7 +289,10 @@ fn an_owned_drag_matches_a_borrowed_one_and_gives_the_sketch_back() {
     let mut lone = Sketch::new();
     let q = lone.add_point(1.0, 2.0).unwrap();
     lone.fix(q).unwrap();
-    let (lone, err) = lone.into_drag(q).err().expect("a fixed point is not dragged");
+    let (lone, err) = lone
+        .into_drag(q)
+        .err()
+        .expect("a fixed point is not dragged");
     assert!(matches!(err, loci::sketch::SketchError::Fixed(_)), "{err}");
     assert_eq!(lone.point(q), [1.0, 2.0]);
 }
