@@ -33,14 +33,19 @@ wasm-bindgen --target web --out-dir "$out/web" "$wasm"
 
 opt=$crate/node_modules/.bin/wasm-opt
 for dir in bundler web; do
-  f=$out/$dir/loci_wasm_bg.wasm
+  rm -f "$out/$dir/.gitignore" "$out/$dir/package.json"
   if [ -x "$opt" ]; then
     # -Os as the Rust profile; the wasm features rustc emits by default must stay enabled.
+    # Both targets at once: binaryen's npm build runs on one core.
+    f=$out/$dir/loci_wasm_bg.wasm
     "$opt" -Os --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
-      --enable-mutable-globals --enable-reference-types --enable-multivalue "$f" -o "$f.opt"
-    mv "$f.opt" "$f"
+      --enable-mutable-globals --enable-reference-types --enable-multivalue "$f" -o "$f.opt" &
   fi
-  rm -f "$out/$dir/.gitignore" "$out/$dir/package.json"
+done
+wait
+for dir in bundler web; do
+  f=$out/$dir/loci_wasm_bg.wasm
+  if [ -f "$f.opt" ]; then mv "$f.opt" "$f"; fi
 done
 [ -x "$opt" ] || echo "build-wasm: wasm-opt not installed (npm ci in $crate); the .wasm is not post-optimised"
 
@@ -72,6 +77,9 @@ rm -rf web/pkg
 mkdir -p web/pkg/web
 cp "$out"/web.js "$out"/loci.js web/pkg/
 cp "$out"/web/loci_wasm.js "$out"/web/loci_wasm_bg.wasm web/pkg/web/
+# The gallery's examples, served beside the page.
+mkdir -p web/pkg/examples
+cp -r examples/sketches examples/assembly web/pkg/examples/
 
 raw=$(wc -c < "$out/web/loci_wasm_bg.wasm")
 gz=$(gzip -9 -c "$out/web/loci_wasm_bg.wasm" | wc -c)

@@ -19,3 +19,4 @@ pub mod report;
 pub mod run;
 pub mod setup;
 pub mod slvs;
+pub mod wasm;

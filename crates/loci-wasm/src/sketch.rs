@@ -209,13 +209,34 @@ impl SketchBinding {
         self.typed(h, "an arc", Sketch::as_arc)
     }
 
-    /// The label of a constraint: its name, or its kind and handle.
+    /// A shape's name: its own, or its kind and handle.
+    fn shape_name(&self, id: ShapeId) -> String {
+        self.shape_names
+            .get(&id.entity().0)
+            .cloned()
+            .unwrap_or_else(|| {
+                let kind = self.sketch().kind(id).map_or("shape", ShapeKind::name);
+                format!("{kind}_{}", id.entity().0)
+            })
+    }
+
+    /// The label of a constraint: its name, or what it says of which shapes (`length crank
+    /// = 1`), so that a conflict reads by the drawing's names.
     fn label(&self, c: SketchConstraintId) -> String {
-        let kind = self.sketch().constraint(c).map_or("?", |(s, _)| s.name());
-        match self.constraint_names.get(&c.0) {
-            Some(n) => format!("{n} ({kind})"),
-            None => format!("{kind} #{}", c.0),
+        let Some((spec, _)) = self.sketch().constraint(c) else {
+            return c.to_string();
+        };
+        let kind = spec.name();
+        if let Some(n) = self.constraint_names.get(&c.0) {
+            return format!("{n} ({kind})");
         }
+        let shapes: Vec<String> = spec
+            .shapes()
+            .iter()
+            .map(|(_, s)| self.shape_name(**s))
+            .collect();
+        let value = spec.value().map_or(String::new(), |v| format!(" = {v}"));
+        format!("{kind} {}{value}", shapes.join(", "))
     }
 
     fn name_for(&mut self, h: u32, kind: ShapeKind, name: Option<String>) -> Res<()> {
@@ -428,11 +449,7 @@ impl SketchBinding {
             .map(|(id, kind)| ShapeLine {
                 id: id.entity().0,
                 kind: kind.name(),
-                name: self
-                    .shape_names
-                    .get(&id.entity().0)
-                    .cloned()
-                    .unwrap_or_else(|| format!("{}_{}", kind.name(), id.entity().0)),
+                name: self.shape_name(id),
                 construction: s.is_construction(id.entity()),
                 points: match kind {
                     ShapeKind::Point => Vec::new(),
