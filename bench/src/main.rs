@@ -259,6 +259,9 @@ fn emit(args: &[String]) -> Result<()> {
     if p.planar {
         eprintln!("{}", files.planegcs()?.display());
     }
+    let wasm = Path::new(dir).join(format!("{}.wasm.json", p.label().replace('/', "_")));
+    std::fs::write(&wasm, loci_bench::wasm::wasm_input(&p)?)?;
+    eprintln!("{}", wasm.display());
     Ok(())
 }
 

@@ -102,7 +102,10 @@ pub struct Setup<'a> {
 }
 
 /// The loci JSON problem and each point's parameters, as `loci_wasm_runner.mjs` reads them.
-fn wasm_input(p: &Problem) -> anyhow::Result<String> {
+///
+/// # Errors
+/// A problem the SolveSpace model cannot take.
+pub fn wasm_input(p: &Problem) -> anyhow::Result<String> {
     let sp = slvs::build(p)?;
     let points: Vec<Vec<u32>> = sp
         .points
