@@ -5,6 +5,9 @@
 # crates/loci-wasm/pkg/loci-wasm-<version>.tgz; the plain ES module build is also copied to
 # web/pkg/ for the browser sketcher.
 #
+# usage: scripts/build-wasm.sh [--small]
+#   --small  optimise for size (opt-level "s", wasm-opt -Os) instead of speed (3, -O3)
+#
 # Needs: the wasm32-unknown-unknown target (rustup target add wasm32-unknown-unknown),
 # wasm-bindgen-cli of the same version as the wasm-bindgen crate in Cargo.lock (cargo install
 # wasm-bindgen-cli --version X), npm. wasm-opt from binaryen's npm build is used when
@@ -15,6 +18,11 @@ root=$(pwd)
 crate=crates/loci-wasm
 out=$crate/pkg
 export CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$root/target}
+level=3
+if [ "${1:-}" = "--small" ]; then
+  level=s
+  export CARGO_PROFILE_WASM_RELEASE_OPT_LEVEL=s
+fi
 
 want=$(awk '/^name = "wasm-bindgen"$/{getline; gsub(/[^0-9.]/, ""); print; exit}' Cargo.lock)
 have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')
@@ -35,10 +43,10 @@ opt=$crate/node_modules/.bin/wasm-opt
 for dir in bundler web; do
   rm -f "$out/$dir/.gitignore" "$out/$dir/package.json"
   if [ -x "$opt" ]; then
-    # -Os as the Rust profile; the wasm features rustc emits by default must stay enabled.
+    # The Rust profile's level; the wasm features rustc emits by default must stay enabled.
     # Both targets at once: binaryen's npm build runs on one core.
     f=$out/$dir/loci_wasm_bg.wasm
-    "$opt" -Os --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+    "$opt" "-O$level" --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
       --enable-mutable-globals --enable-reference-types --enable-multivalue "$f" -o "$f.opt" &
   fi
 done

@@ -448,6 +448,9 @@ fn wasm(args: &[String]) -> Result<()> {
     }
     let bench = Path::new(env!("CARGO_MANIFEST_DIR"));
     let repo = bench.parent().unwrap_or(bench);
+    // Both WebAssembly runners solve untimed for a second first, so that node has recompiled
+    // the hot functions with its optimising compiler (native loci is compiled ahead of time).
+    std::env::set_var("LOCI_BENCH_WARMUP_S", "1");
     eprintln!("setting up PlaneGCS ...");
     let (runners, avail) = setup(bench, &bench.join(".build"), &[Solver::PlaneGcs]);
     for (s, a) in &avail {

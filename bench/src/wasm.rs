@@ -6,6 +6,9 @@
 //! problem, PlaneGCS its translation ([`crate::peers::to_planegcs`]). Each answer is checked
 //! by the harness ([`crate::run::judge`]). Times are the solve call alone, the median over
 //! the repetitions; the build (reading the problem into the solver) is listed apart for wasm.
+//! Both WebAssembly runners first solve untimed for a second (`LOCI_BENCH_WARMUP_S`), so that
+//! node's optimising compiler has taken over the hot functions, as in a page that has been
+//! dragging for a moment; native loci is compiled ahead of time.
 
 use crate::generate::generate;
 use crate::problem::{Family, Problem, Variant};
@@ -51,7 +54,18 @@ impl Timing {
                 verdict: Verdict::Solved,
                 ..
             } => format!("{solve_ms:.3}"),
-            Timing::Ran { verdict, .. } => format!("{verdict:?}"),
+            Timing::Ran {
+                verdict: Verdict::Crashed { detail },
+                ..
+            } if detail.contains("out of memory") => "out of memory".into(),
+            Timing::Ran {
+                verdict: Verdict::Timeout { limit_s },
+                ..
+            } => format!("time limit ({limit_s} s)"),
+            Timing::Ran { verdict, .. } => {
+                let v = format!("{verdict:?}");
+                v.chars().take(60).collect()
+            }
             Timing::Skipped(why) => format!("– ({why})"),
         }
     }
