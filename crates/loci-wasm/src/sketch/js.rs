@@ -111,7 +111,7 @@ impl SketchBinding {
         js(self.shape(shape).and_then(|(id, _)| {
             let r = self.sketch_mut().remove_shape(id)?;
             for s in &r.shapes {
-                self.shape_names.remove(&s.entity().0);
+                self.unname(s.entity().0);
             }
             for c in &r.constraints {
                 self.constraint_names.remove(&c.0);

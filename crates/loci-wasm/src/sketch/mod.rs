@@ -8,7 +8,7 @@ use loci::sketch::{
 };
 use loci::Member;
 use serde::Serialize;
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeMap, HashSet};
 use wasm_bindgen::prelude::*;
 
 mod js;
@@ -27,6 +27,10 @@ pub struct SketchBinding {
     state: State,
     /// Each named shape's name, by entity handle.
     shape_names: BTreeMap<u32, String>,
+    /// Every shape name in use, to refuse a repeated one and pick fresh ones in constant time.
+    taken: HashSet<String>,
+    /// The next number tried for an unnamed shape of each kind (`P1`, `L1`, ...).
+    next_auto: [u32; 5],
     /// Each named constraint's name.
     constraint_names: BTreeMap<u32, String>,
 }
@@ -108,6 +112,8 @@ impl SketchBinding {
         SketchBinding {
             state: State::Idle(s),
             shape_names: BTreeMap::new(),
+            taken: HashSet::new(),
+            next_auto: [1; 5],
             constraint_names: BTreeMap::new(),
         }
     }
@@ -119,6 +125,7 @@ impl SketchBinding {
     pub fn read(text: &str) -> Res<Self> {
         let l = SketchFile::from_json(text)?.load()?;
         let mut b = Self::from_sketch(l.sketch);
+        b.taken = l.shapes.keys().cloned().collect();
         b.shape_names = l
             .shapes
             .iter()
@@ -244,7 +251,7 @@ impl SketchBinding {
     fn name_for(&mut self, h: u32, kind: ShapeKind, name: Option<String>) -> Res<()> {
         let name = match name.filter(|n| !n.is_empty()) {
             Some(n) => {
-                if self.shape_names.values().any(|m| *m == n) {
+                if self.taken.contains(&n) {
                     return Err(Fault {
                         class: crate::error::Class::Sketch,
                         object: Some(n.clone()),
@@ -254,22 +261,32 @@ impl SketchBinding {
                 n
             }
             None => {
-                let prefix = match kind {
-                    ShapeKind::Point => "P",
-                    ShapeKind::Line => "L",
-                    ShapeKind::Circle => "C",
-                    ShapeKind::Arc => "A",
-                    ShapeKind::Cubic => "B",
+                let (slot, prefix) = match kind {
+                    ShapeKind::Point => (0, "P"),
+                    ShapeKind::Line => (1, "L"),
+                    ShapeKind::Circle => (2, "C"),
+                    ShapeKind::Arc => (3, "A"),
+                    ShapeKind::Cubic => (4, "B"),
                 };
-                let taken: BTreeSet<&String> = self.shape_names.values().collect();
-                (1..)
-                    .map(|i| format!("{prefix}{i}"))
-                    .find(|n| !taken.contains(n))
-                    .expect("an unused name")
+                loop {
+                    let n = format!("{prefix}{}", self.next_auto[slot]);
+                    self.next_auto[slot] += 1;
+                    if !self.taken.contains(&n) {
+                        break n;
+                    }
+                }
             }
         };
+        self.taken.insert(name.clone());
         self.shape_names.insert(h, name);
         Ok(())
+    }
+
+    /// Forgets the name of a removed shape.
+    pub(crate) fn unname(&mut self, h: u32) {
+        if let Some(n) = self.shape_names.remove(&h) {
+            self.taken.remove(&n);
+        }
     }
 
     /// Adds a shape made by `make` and names it.
