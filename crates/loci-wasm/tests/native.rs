@@ -105,7 +105,7 @@ fn a_problem_file_solves_and_a_slvs_file_round_trips() {
             .all(|g| g["ok"] == true),
         "{groups}"
     );
-    let e = sys.solve_group(9, &[], "").err().expect("no group 9");
+    let e = sys.solve_group(9, &[], "").expect_err("no group 9");
     assert_eq!(
         (e.class, e.object.as_deref()),
         (Class::Solve, Some("group 9"))

@@ -14,6 +14,8 @@ use wasm_bindgen::prelude::*;
 mod js;
 
 /// The sketch, or the drag that holds it between mouse events.
+// One per sketch object of JavaScript, moved only when a drag starts or ends: its size is no cost.
+#[allow(clippy::large_enum_variant)]
 enum State {
     Idle(Sketch),
     Dragging(Drag<'static>),
