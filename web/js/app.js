@@ -312,7 +312,12 @@ function constraintsFor(kind, sel) {
       break;
     case "length":
       if (lines.length === 1 && pts.length === 1) {
-        out.push({ type: "point_line_distance", point: pts[0].id, line: lines[0].id, value: 1 });
+        // Signed as loci measures it: positive to the right of the line's direction.
+        const [p, q] = lines[0].points.map((x) => app.sketch.point(x));
+        const [x, y] = app.sketch.point(pts[0].id);
+        const d = ((q[0] - p[0]) * (y - p[1]) - (q[1] - p[1]) * (x - p[0])) / -Math.hypot(q[0] - p[0], q[1] - p[1]);
+        const v = ask(`distance from ${pts[0].name} to ${lines[0].name} (positive to the right)`, d);
+        if (v !== null) out.push({ type: "point_line_distance", point: pts[0].id, line: lines[0].id, value: v });
       } else if (pts.length === 2) {
         const [a, b] = pts.map((p) => app.sketch.point(p.id));
         const v = ask("distance", Math.hypot(b[0] - a[0], b[1] - a[1]));
