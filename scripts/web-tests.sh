@@ -31,7 +31,7 @@ fi
 want=$(awk '/^name = "wasm-bindgen"$/{getline; gsub(/[^0-9.]/, ""); print; exit}' Cargo.lock)
 if [ "$(wasm-bindgen --version 2>/dev/null | awk '{print $2}')" != "$want" ]; then
   say "installing wasm-bindgen-cli $want (cargo install)"
-  cargo install -q wasm-bindgen-cli --version "$want" --locked >/dev/null 2>&1 \
+  cargo install -q wasm-bindgen-cli --version "$want" >/dev/null 2>&1 \
     || skip_all "wasm-bindgen-cli $want cannot be installed (cargo install wasm-bindgen-cli --version $want)"
 fi
 command -v node >/dev/null 2>&1 && command -v npm >/dev/null 2>&1 || skip_all "node and npm are not installed"
