@@ -2,8 +2,10 @@
 // loads the page, drags the four-bar's crank pin with real mouse events along a circle, reads
 // back every point after every move and checks the bar lengths hold, the fixed pivots stay and
 // the coupler triangle never turns over; draws a line and adds a conflicting dimension from
-// the toolbar and checks the conflict is listed in red by name; saves the sketch; times drag
-// steps at 1,000 shapes; and saves a screenshot to docs/img/web-sketcher.png.
+// the toolbar and checks the conflict is listed in red by name; saves the sketch as JSON and
+// as .slvs and opens the .slvs again; shows the door hinge assembly; solves a 10,000-segment
+// chain in the page; times drag steps at 1,000 shapes; and saves a screenshot to
+// docs/img/web-sketcher.png.
 //
 // usage: node web/test/browser.test.mjs   (after scripts/build-wasm.sh; CHROMIUM overrides
 // /usr/bin/chromium)
