@@ -10,6 +10,9 @@
 //! loci-bench python [--sizes N,N,...] [--python PATH] [--slvs-python PATH] [--limit S]
 //! loci-bench drag [SIZES [STEPS]] [--long] [--peers slvs,planegcs,brep|none] [--peer-limit S]
 //!                                     (sizes as 100,1000,10000; 600 steps)
+//! loci-bench wasm [--chain N,N,...] [--grid N,N,...] [--reps N] [--limit SECONDS]
+//!                 (loci-wasm under node against native loci and PlaneGCS; build the package
+//!                  first with scripts/build-wasm.sh)
 //! ```
 
 use anyhow::{bail, Context, Result};
@@ -49,6 +52,7 @@ fn real_main() -> Result<()> {
         Some("assembly") => return assembly(&args[1..]),
         Some("drag") => return drag(&args[1..]),
         Some("python") => return python(&args[1..]),
+        Some("wasm") => return wasm(&args[1..]),
         _ => {}
     }
     let mut quick = false;
@@ -257,6 +261,9 @@ fn emit(args: &[String]) -> Result<()> {
     if p.planar {
         eprintln!("{}", files.planegcs()?.display());
     }
+    let wasm = Path::new(dir).join(format!("{}.wasm.json", p.label().replace('/', "_")));
+    std::fs::write(&wasm, loci_bench::wasm::wasm_input(&p)?)?;
+    eprintln!("{}", wasm.display());
     Ok(())
 }
 
@@ -464,5 +471,59 @@ fn drag(args: &[String]) -> Result<()> {
         }
     }
     print!("{}", loci_bench::drag_peers::table(&rows));
+    Ok(())
+}
+
+/// `loci-bench wasm [--chain N,...] [--grid N,...] [--reps N] [--limit SECONDS]`: loci as
+/// WebAssembly under node, native loci and PlaneGCS on the chain and grid families, in one run.
+fn wasm(args: &[String]) -> Result<()> {
+    use loci_bench::wasm::{run_family, table, Setup};
+    let list = |v: &str| -> Result<Vec<usize>> {
+        v.split(',')
+            .map(|s| s.parse().with_context(|| format!("bad size {s}")))
+            .collect()
+    };
+    let mut chain = vec![10, 30, 100, 300, 1_000, 3_000, 10_000];
+    let mut grid = vec![3, 5, 10, 17, 32, 50, 100];
+    let mut reps = 11;
+    let mut limit = 60.0;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = || it.next().with_context(|| format!("{a} needs a value"));
+        match a.as_str() {
+            "--chain" => chain = list(value()?)?,
+            "--grid" => grid = list(value()?)?,
+            "--reps" => reps = value()?.parse().context("--reps takes a number")?,
+            "--limit" => limit = value()?.parse().context("--limit takes seconds")?,
+            other => bail!("unknown argument {other}"),
+        }
+    }
+    let bench = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let repo = bench.parent().unwrap_or(bench);
+    // Both WebAssembly runners solve untimed for a second first, so that node has recompiled
+    // the hot functions with its optimising compiler (native loci is compiled ahead of time).
+    std::env::set_var("LOCI_BENCH_WARMUP_S", "1");
+    eprintln!("setting up PlaneGCS ...");
+    let (runners, avail) = setup(bench, &bench.join(".build"), &[Solver::PlaneGcs]);
+    for (s, a) in &avail {
+        if let Err(e) = a {
+            eprintln!("  {} not available: {e}", s.name());
+        }
+    }
+    let work = std::env::temp_dir().join(format!("loci-bench-wasm-{}", std::process::id()));
+    std::fs::create_dir_all(&work)?;
+    let s = Setup {
+        node: PathBuf::from("node"),
+        repo,
+        runners: &runners,
+        reps,
+        budget_s: 2.0,
+        limit: Duration::from_secs_f64(limit),
+        work: &work,
+    };
+    let mut rows = run_family(&s, Family::Chain, &chain, |l| eprintln!("{l}"));
+    rows.extend(run_family(&s, Family::Grid, &grid, |l| eprintln!("{l}")));
+    let _ = std::fs::remove_dir_all(&work);
+    print!("{}", table(&rows));
     Ok(())
 }

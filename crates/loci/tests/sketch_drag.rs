@@ -254,3 +254,45 @@ fn a_whole_circle_is_dragged_by_its_centre_and_keeps_its_radius() {
     assert!((dist(s.point(on), ctr) - 1.5).abs() < 1e-9);
     assert_eq!(s.system().constraints().len(), 2, "no soft constraint left");
 }
+
+/// A drag that owns its sketch (as bindings whose drag spans calls need) moves the four-bar
+/// exactly as a borrowing drag does, and gives the sketch back without its soft constraints.
+#[test]
+fn an_owned_drag_matches_a_borrowed_one_and_gives_the_sketch_back() {
+    let FourBar { mut s, b, c, e } = four_bar();
+    assert!(s.solve().unwrap().outcome.is_ok());
+    let constraints = s.system().constraints().len();
+    let mut borrowed = s.clone();
+    let path: Vec<[f64; 2]> = (1..=12)
+        .map(|k| {
+            let t = f64::from(k) * 0.25;
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let mut d = borrowed.begin_drag(b).unwrap();
+    for t in &path {
+        assert!(d.step(*t).unwrap().reached);
+    }
+    d.end();
+    let mut owned = s.into_drag(b).map_err(|(_, e)| e).unwrap();
+    for t in &path {
+        assert!(owned.step(*t).unwrap().reached);
+    }
+    let back = owned.into_sketch().expect("the drag owned the sketch");
+    assert_eq!(back.system().constraints().len(), constraints);
+    for p in [b, c, e] {
+        assert_eq!(back.point(p), borrowed.point(p), "{p}");
+    }
+    // A borrowing drag has no sketch to give back; a refused start gives the sketch back.
+    assert!(borrowed.begin_drag(c).unwrap().into_sketch().is_none());
+    assert_eq!(borrowed.system().constraints().len(), constraints);
+    let mut lone = Sketch::new();
+    let q = lone.add_point(1.0, 2.0).unwrap();
+    lone.fix(q).unwrap();
+    let (lone, err) = lone
+        .into_drag(q)
+        .err()
+        .expect("a fixed point is not dragged");
+    assert!(matches!(err, loci::sketch::SketchError::Fixed(_)), "{err}");
+    assert_eq!(lone.point(q), [1.0, 2.0]);
+}

@@ -41,8 +41,12 @@ pub struct DragStep {
 }
 
 /// A drag in progress; ends (taking its soft constraints out) when dropped.
+///
+/// [`Sketch::begin_drag`] borrows the sketch for the drag; [`Sketch::into_drag`] hands the
+/// sketch to the drag, which gives it back from [`Drag::into_sketch`]: a drag that lives
+/// between calls of another language (a browser's mouse events) cannot hold a borrow.
 pub struct Drag<'a> {
-    sketch: &'a mut Sketch,
+    sketch: Held<'a>,
     points: Vec<PointId>,
     soft: Vec<SoftRec>,
     solver: Solver,
@@ -60,14 +64,68 @@ pub struct Drag<'a> {
     compiled: Option<u64>,
 }
 
+/// The sketch a drag moves: borrowed from the caller or owned by the drag.
+enum Held<'a> {
+    Borrowed(&'a mut Sketch),
+    Owned(Box<Sketch>),
+    /// Between [`Drag::into_sketch`] taking the sketch out and the drag's end; never read.
+    Gone,
+}
+
+impl std::ops::Deref for Held<'_> {
+    type Target = Sketch;
+    fn deref(&self) -> &Sketch {
+        match self {
+            Held::Borrowed(s) => s,
+            Held::Owned(s) => s,
+            Held::Gone => unreachable!("a drag's sketch is read only while the drag holds it"),
+        }
+    }
+}
+
+impl std::ops::DerefMut for Held<'_> {
+    fn deref_mut(&mut self) -> &mut Sketch {
+        match self {
+            Held::Borrowed(s) => s,
+            Held::Owned(s) => s,
+            Held::Gone => unreachable!("a drag's sketch is read only while the drag holds it"),
+        }
+    }
+}
+
 impl Sketch {
+    /// Starts dragging a shape as [`Sketch::begin_drag`] does, handing the sketch to the drag
+    /// (get it back with [`Drag::into_sketch`]).
+    ///
+    /// # Errors
+    /// As [`Sketch::begin_drag`]; the sketch comes back unchanged with the error.
+    pub fn into_drag(
+        mut self,
+        shape: impl Into<ShapeId>,
+    ) -> Result<Drag<'static>, (Box<Sketch>, SketchError)> {
+        match self.start_drag(shape.into()) {
+            Ok(mut d) => {
+                d.sketch = Held::Owned(Box::new(self));
+                Ok(d)
+            }
+            Err(e) => Err((Box::new(self), e)),
+        }
+    }
+
     /// Starts dragging a shape: a point, or a whole line, circle, arc or cubic (its grip is its
     /// midpoint, centre or the mean of its control points).
     ///
     /// # Errors
     /// No such shape, or one with a fixed point.
     pub fn begin_drag(&mut self, shape: impl Into<ShapeId>) -> Result<Drag<'_>, SketchError> {
-        let shape = shape.into();
+        let mut d: Drag<'_> = self.start_drag(shape.into())?;
+        d.sketch = Held::Borrowed(self);
+        Ok(d)
+    }
+
+    /// Everything of a drag but its hold on the sketch, which the caller gives it: the soft
+    /// constraints are written, so the drag returned must be given the sketch.
+    fn start_drag(&mut self, shape: ShapeId) -> Result<Drag<'static>, SketchError> {
         self.kind(shape).ok_or(SketchError::NoShape(shape))?;
         let points = self.defining_points(shape);
         let fixed = self.fixed_points();
@@ -107,7 +165,7 @@ impl Sketch {
             .collect();
         let soft = self.add_soft()?;
         Ok(Drag {
-            sketch: self,
+            sketch: Held::Gone,
             points,
             soft,
             solver: Solver::new(Self::SHAPE_GROUP, &params, cfg),
@@ -203,7 +261,7 @@ impl Drag<'_> {
     /// The sketch being dragged, to read coordinates between steps.
     #[must_use]
     pub fn sketch(&self) -> &Sketch {
-        self.sketch
+        &self.sketch
     }
 
     /// Moves the grip toward `target`: the whole way in one solve when that flips nothing,
@@ -348,10 +406,23 @@ impl Drag<'_> {
 
     /// Ends the drag, taking its soft constraints out (as dropping it does).
     pub fn end(self) {}
+
+    /// Ends the drag, taking its soft constraints out, and gives back the sketch when the drag
+    /// owns it ([`Sketch::into_drag`]); `None` for a drag that borrowed it.
+    #[must_use]
+    pub fn into_sketch(mut self) -> Option<Sketch> {
+        self.sketch.remove_soft(&self.soft);
+        match std::mem::replace(&mut self.sketch, Held::Gone) {
+            Held::Owned(s) => Some(*s),
+            Held::Borrowed(_) | Held::Gone => None,
+        }
+    }
 }
 
 impl Drop for Drag<'_> {
     fn drop(&mut self) {
-        self.sketch.remove_soft(&self.soft);
+        if !matches!(self.sketch, Held::Gone) {
+            self.sketch.remove_soft(&self.soft);
+        }
     }
 }
