@@ -321,7 +321,15 @@ fn conflict_sets(
     }
     let mut out: Vec<ConflictSet> = Vec::new();
     let mut done = HashSet::new();
+    // Smallest first, and a candidate that holds a conflict already shown is not checked: it
+    // fails for that conflict's sake and says nothing more (at the least-squares point of one
+    // impossible dimension in a mesh, every circuit through it reads as conflicting, and each
+    // failing check runs a solve to its end).
+    candidates.sort_by_key(Vec::len);
     for c in candidates {
+        if out.iter().any(|o| o.members.iter().all(|m| c.contains(m))) {
+            continue;
+        }
         let (members, verified) = if c.len() <= minimise_up_to {
             minimal::minimise(eqs, &c, starts, cfg)
         } else {
