@@ -160,3 +160,33 @@ fn no_soft_constraint_is_left_behind_after_an_error() {
     assert!(s.solve().unwrap().outcome.is_ok());
     assert_eq!(s.system().constraints().len(), n);
 }
+
+#[test]
+fn a_user_constraint_that_only_agrees_with_soft_ones_is_not_redundant() {
+    // Two arcs drawn with the same radius and two lines with the same length: equal_radius and
+    // equal_length agree with what the soft constraints keep, which makes the rows dependent,
+    // but the user's sketch has nothing redundant in it.
+    let mut s = Sketch::new();
+    let [c, a, b] = [[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let arc = s.add_arc(c, a, b).unwrap();
+    let [d, e, f] = [[6.0, 0.0], [8.0, 0.0], [6.0, 2.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let arc2 = s.add_arc(d, e, f).unwrap();
+    s.equal_radius(arc, arc2).unwrap();
+    let [p, q, r, t] =
+        [[0.0, 5.0], [3.0, 9.0], [6.0, 5.0], [6.0, 10.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let l1 = s.add_line(p, q).unwrap();
+    let l2 = s.add_line(r, t).unwrap();
+    let eq = s.equal_length(l1, l2).unwrap();
+    let rep = s.solve().unwrap();
+    assert_eq!(rep.outcome, Outcome::Okay, "{rep:?}");
+    assert!(rep.failed.is_empty(), "{rep:?}");
+    assert!((len(&s, l1) - 5.0).abs() < TOL && (len(&s, l2) - 5.0).abs() < TOL);
+    // The same constraint given twice is redundant in the user's own sketch, and named.
+    let again = s.equal_length(l1, l2).unwrap();
+    let rep = s.solve().unwrap();
+    assert_eq!(rep.outcome, Outcome::RedundantOkay, "{rep:?}");
+    assert!(
+        rep.failed.contains(&again) || rep.failed.contains(&eq),
+        "{rep:?}"
+    );
+}

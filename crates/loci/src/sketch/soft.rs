@@ -373,6 +373,42 @@ impl Sketch {
         Ok(Vec::new())
     }
 
+    /// Of the user constraints `named` redundant in a solve with soft constraints, those still
+    /// redundant without them. A user constraint that only agrees with what soft constraints
+    /// keep (an equal radius on two arcs drawn alike) makes rows dependent, but the user's
+    /// sketch holds nothing redundant: the soft constraints stand aside for it.
+    fn redundant_without_soft(
+        &self,
+        named: &[ConstraintId],
+        soft: &[SoftRec],
+        active: &[usize],
+    ) -> Vec<ConstraintId> {
+        if !named.iter().any(|c| self.owner.contains_key(c)) {
+            return named.to_vec();
+        }
+        let mut plain = self.sys.clone();
+        for &i in active {
+            plain.remove_constraint(soft[i].core);
+        }
+        let Ok(d) = crate::diagnose(&plain, Self::SHAPE_GROUP, &self.cfg) else {
+            return named.to_vec();
+        };
+        let still: BTreeSet<ConstraintId> = d
+            .redundant
+            .iter()
+            .flat_map(|set| set.members.iter().chain(&set.involved))
+            .filter_map(|m| match m {
+                Member::Constraint(c) => Some(*c),
+                Member::Entity(_) => None,
+            })
+            .collect();
+        named
+            .iter()
+            .copied()
+            .filter(|c| still.contains(c))
+            .collect()
+    }
+
     fn report(
         &self,
         r: &Report,
@@ -380,8 +416,11 @@ impl Sketch {
         active: &[usize],
         dropped: Vec<Soft>,
     ) -> SketchReport {
-        let failed: BTreeSet<SketchConstraintId> = r
-            .failed
+        let mut core_failed: Vec<ConstraintId> = r.failed.clone();
+        if r.outcome == Outcome::RedundantOkay && !active.is_empty() {
+            core_failed = self.redundant_without_soft(&core_failed, soft, active);
+        }
+        let failed: BTreeSet<SketchConstraintId> = core_failed
             .iter()
             .filter_map(|c| self.owner.get(c).copied())
             .collect();
