@@ -158,14 +158,6 @@ fn run(name: &'static str, mut case: Case) -> DragFigures {
         let t0 = Instant::now();
         let st = drag.step(*target).expect("the solver starts");
         times.push(t0.elapsed().as_secs_f64() * 1e3);
-        if std::env::var("LOCI_DEBUG_STEPS").is_ok() && *times.last().unwrap() > 0.5 {
-            eprintln!(
-                "step {} {:.3} ms {:?}",
-                times.len() - 1,
-                times.last().unwrap(),
-                st
-            );
-        }
         short += usize::from(!st.reached);
         let now: Vec<f64> = case
             .triangles
