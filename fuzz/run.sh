@@ -3,7 +3,8 @@
 #
 #   fuzz/run.sh [SECONDS_PER_TARGET] [TARGETS...]
 #
-# SECONDS_PER_TARGET defaults to 60; TARGETS to all of json, slvs, c_abi and resolve.
+# SECONDS_PER_TARGET defaults to 60; TARGETS to all of json, slvs, c_abi, resolve, sketch_file
+# and assembly_file.
 # New inputs go to fuzz/work/corpus/<target> (the committed seeds in fuzz/corpus/<target> are
 # read, never written), crashes to fuzz/artifacts/<target>, logs to fuzz/work/logs.
 # Exit status: 0 when no target crashed, 1 when one did, 2 on a usage or build error.
@@ -21,7 +22,7 @@ fi
 shift $(($# > 0 ? 1 : 0))
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-    targets=(json slvs c_abi resolve)
+    targets=(json slvs c_abi resolve sketch_file assembly_file)
 fi
 timeout=${LOCI_FUZZ_TIMEOUT:-20}
 sanitizer=${LOCI_FUZZ_SANITIZER:-address}
@@ -44,11 +45,11 @@ for t in "${targets[@]}"; do
     cargo +nightly fuzz build -s "$sanitizer" "$t" >&2 || exit 2
 done
 
-# The longest input each target reads: JSON and .slvs files of a few pages; the structured
+# The longest input each target reads: JSON, sketch, assembly and .slvs files of a few pages; the structured
 # targets use a few hundred bytes.
 max_len() {
     case $1 in
-        json | slvs) echo 16384 ;;
+        json | slvs | sketch_file | assembly_file) echo 16384 ;;
         c_abi) echo 4096 ;;
         *) echo 1024 ;;
     esac

@@ -7,7 +7,9 @@
 //! - `fuzz/regressions/resolve/*`: the structured target's byte strings, which build a
 //!   system through the Rust API, solve, edit and re-solve it and check every answer
 //!   independently of loci's equations;
-//! - `fuzz/corpus/json/*`: the JSON seeds (small problem files).
+//! - `fuzz/regressions/{sketch_file,assembly_file}/*`: the sketch and assembly file readers,
+//!   a solve, and writing back;
+//! - `fuzz/corpus/*`: the seeds of the JSON, sketch file and assembly file targets.
 //!
 //! `c_abi` findings are kept as the JSON problem of the same model under `json/`.
 
@@ -45,6 +47,8 @@ fn run(target: &str, data: &[u8]) {
         "json" => cases::json::run_with(data, Skips::NONE),
         "slvs" => cases::slvs::run(data),
         "resolve" => cases::resolve::run_with(data, Skips::NONE),
+        "sketch_file" => cases::files::sketch(data),
+        "assembly_file" => cases::files::assembly(data),
         other => panic!("no replay for target {other}"),
     }
 }
@@ -87,7 +91,7 @@ fn replay(target: &str, dir: &Path, name_prefix: &str) -> (usize, Vec<String>) {
 fn fuzz_regressions_stay_fixed() {
     let root = fuzz_dir().join("regressions");
     let mut all = Vec::new();
-    for target in ["json", "slvs", "resolve"] {
+    for target in ["json", "slvs", "resolve", "sketch_file", "assembly_file"] {
         let (_, f) = replay(target, &root.join(target), &format!("{target}/"));
         all.extend(f);
     }
@@ -103,4 +107,18 @@ fn fuzz_json_seeds_pass_the_json_checks() {
         "JSON seeds fail:\n{}",
         failures.join("\n")
     );
+}
+
+#[test]
+fn fuzz_file_seeds_pass_the_file_checks() {
+    for target in ["sketch_file", "assembly_file"] {
+        let dir = fuzz_dir().join("corpus").join(target);
+        let (n, failures) = replay(target, &dir, &format!("corpus/{target}/"));
+        assert!(n > 0, "no seeds found in fuzz/corpus/{target}");
+        assert!(
+            failures.is_empty(),
+            "{target} seeds fail:\n{}",
+            failures.join("\n")
+        );
+    }
 }

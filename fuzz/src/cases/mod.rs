@@ -3,6 +3,7 @@
 //! inputs without libFuzzer.
 
 pub mod bytes;
+pub mod files;
 pub mod geometry;
 pub mod json;
 pub mod resolve;
