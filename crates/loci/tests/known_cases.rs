@@ -22,15 +22,7 @@ fn load(name: &str) -> System {
 
 /// Cases whose right outcome loci does not reach yet, with what it says instead. Each still
 /// runs: it must never claim a solution.
-const NOT_YET: &[(&str, &str)] = &[(
-    "s0026_base.json",
-    "satisfiable, but neither loci nor SolveSpace finds the solution from this start (nor \
-         from 30 random ones); loci names a set that fails from the drawing and from where it \
-         stopped. `loci check` shrinks it to six constraints (7, 8, 13, 21, 32, 39) that are \
-         satisfiable too (alone they solve from 19 of 40 random starts): from the drawing \
-         Newton collapses a line to a point, where its angle and distances lose their \
-         directions",
-)];
+const NOT_YET: &[(&str, &str)] = &[];
 
 #[test]
 fn every_known_case_gives_the_right_outcome() {

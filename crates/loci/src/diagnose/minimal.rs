@@ -2,9 +2,10 @@
 //! solve stopped and from the user's drawing, and a deletion filter that removes every member
 //! the conflict does not need.
 
+use super::construct::construct;
 use super::report::Member;
 use super::unmerged::{Equations, CONSTANT};
-use crate::equations::Rows;
+use crate::equations::{Kernel, Rows};
 use crate::solve::newton::{Component, Scratch};
 use crate::solve::Config;
 use std::collections::HashMap;
@@ -40,9 +41,18 @@ fn check(eqs: &Equations, kernels: &[usize], starts: &[&[f64]], cfg: &Config, qu
     };
     let cfg = &cfg.clone().with_max_iterations(budget);
     let nudges: &[f64] = if quick { &[0.0] } else { &[0.0, 1e-3] };
-    starts
+    if starts
         .iter()
         .any(|values| consistent_from(eqs, kernels, values, cfg, nudges))
+    {
+        return true;
+    }
+    // Newton from the drawing can fold the sketch where the set could hold: built up one
+    // constraint at a time instead, it may. Not for large sets checked quickly.
+    !quick
+        && starts
+            .last()
+            .is_some_and(|start| construct(eqs, kernels, start, &|_| 1.0, cfg, true).is_some())
 }
 
 /// Sets of more constraints than this, checked whole, are checked quickly.
@@ -58,6 +68,75 @@ fn consistent_from(
     cfg: &Config,
     nudges: &[f64],
 ) -> bool {
+    // From where the solve stopped, then from a generic point nearby: a stop at degenerate
+    // geometry (a line collapsed to a point) says nothing about whether the set can hold.
+    let mut scratch = Scratch::default();
+    nudges.iter().any(|&nudge| {
+        let mut v = values.to_vec();
+        // Too large to try is no evidence that the set fails.
+        !matches!(
+            solve_set(
+                eqs,
+                &eqs.kernels,
+                kernels,
+                &mut v,
+                &|_| 1.0,
+                cfg,
+                nudge,
+                &mut scratch
+            ),
+            Alone::Failed
+        )
+    })
+}
+
+/// How a solve of some equations alone ended.
+enum Alone {
+    Converged,
+    Failed,
+    TooLarge,
+}
+
+/// Newton on the equations of `kernels` alone, from `values` (one per parameter; the other
+/// parameters are constants), columns weighted by `scale_of_param`. On success the solution
+/// is written into `values`; otherwise they are left as they were.
+pub(crate) fn solve_alone(
+    eqs: &Equations,
+    defs: &[Kernel],
+    kernels: &[usize],
+    values: &mut [f64],
+    scale_of_param: &dyn Fn(usize) -> f64,
+    cfg: &Config,
+    nudge: f64,
+) -> bool {
+    let mut scratch = Scratch::default();
+    matches!(
+        solve_set(
+            eqs,
+            defs,
+            kernels,
+            values,
+            scale_of_param,
+            cfg,
+            nudge,
+            &mut scratch
+        ),
+        Alone::Converged
+    )
+}
+
+/// [`solve_alone`], from `values` moved by `nudge` (relative) in a generic direction.
+#[allow(clippy::too_many_arguments)]
+fn solve_set(
+    eqs: &Equations,
+    defs: &[Kernel],
+    kernels: &[usize],
+    values: &mut [f64],
+    scale_of_param: &dyn Fn(usize) -> f64,
+    cfg: &Config,
+    nudge: f64,
+    scratch: &mut Scratch,
+) -> Alone {
     let mut local: HashMap<u32, u32> = HashMap::new();
     let mut globals = Vec::new();
     for &k in kernels {
@@ -71,13 +150,18 @@ fn consistent_from(
     if globals.is_empty() {
         // Constants only: they hold or not as they are.
         let mut xs = Vec::new();
-        return kernels.iter().all(|&k| {
-            let kern = &eqs.kernels[k];
+        let holds = kernels.iter().all(|&k| {
+            let kern = &defs[k];
             kern.gather(values, &mut xs);
             let mut out = Rows::new();
             kern.eq.eval(&xs, &mut out);
             out.v[..out.n].iter().all(|v| v.abs() <= cfg.tolerance)
         });
+        return if holds {
+            Alone::Converged
+        } else {
+            Alone::Failed
+        };
     }
     let map = |p: usize| {
         let c = eqs.col_of_param[p];
@@ -88,29 +172,30 @@ fn consistent_from(
         }
     };
     let n = globals.len();
-    let mut comp = Component::new(&eqs.kernels, kernels, &map, n, vec![1.0; n]);
-    let x0: Vec<f64> = globals
+    let scale = globals
         .iter()
-        .map(|&c| values[eqs.param_of_col[c as usize]])
+        .map(|&c| scale_of_param(eqs.param_of_col[c as usize]))
         .collect();
-    // From where the solve stopped, then from a generic point nearby: a stop at degenerate
-    // geometry (a line collapsed to a point) says nothing about whether the set can hold.
-    let mut scratch = Scratch::default();
-    for &nudge in nudges {
-        let mut x: Vec<f64> = x0
-            .iter()
-            .enumerate()
-            .map(|(i, v)| {
-                v + nudge * (1.0 + v.abs()) * (((i as f64 + 1.0) * 0.618_034).fract() - 0.5)
-            })
-            .collect();
-        let fin = comp.solve(&eqs.kernels, &mut x, values, cfg, &mut scratch);
-        // Too large to try is no evidence that the set fails.
-        if fin.converged || fin.too_large {
-            return true;
-        }
+    let mut comp = Component::new(defs, kernels, &map, n, scale);
+    let mut x: Vec<f64> = globals
+        .iter()
+        .enumerate()
+        .map(|(i, &c)| {
+            let v = values[eqs.param_of_col[c as usize]];
+            v + nudge * (1.0 + v.abs()) * (((i as f64 + 1.0) * 0.618_034).fract() - 0.5)
+        })
+        .collect();
+    let fin = comp.solve(defs, &mut x, values, cfg, scratch);
+    if fin.too_large {
+        return Alone::TooLarge;
     }
-    false
+    if !fin.converged {
+        return Alone::Failed;
+    }
+    for (&c, &v) in globals.iter().zip(&x) {
+        values[eqs.param_of_col[c as usize]] = v;
+    }
+    Alone::Converged
 }
 
 /// Whether `set` fails as a whole, without shrinking it: one check, for sets too large for the

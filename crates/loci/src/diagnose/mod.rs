@@ -15,6 +15,7 @@
 //! 5. **Measurements** of reference constraints ([`measure`]).
 
 mod circuits;
+mod construct;
 mod eigen;
 mod focus;
 mod freedom;
@@ -28,6 +29,7 @@ mod structure;
 mod tests;
 mod unmerged;
 
+pub(crate) use construct::construct_group;
 pub use motion::Motion;
 pub use report::{
     ConflictSet, Diagnosis, EntityFreedom, Measurement, Member, OverConstrained, RedundantSet,
@@ -196,7 +198,7 @@ impl System {
 /// the conflict sets found where it stopped (`values`), each shown to fail on its own from
 /// there and from the drawing, replaces the solver's list. When no set fails on its own, the
 /// verdict was a guess: the outcome becomes `did_not_converge`, with the constraints left
-/// unsatisfied where the solve stopped.
+/// unsatisfied where the solve stopped. Returns whether some set was shown to fail.
 pub(crate) fn name_conflicts(
     sys: &System,
     group: GroupId,
@@ -205,7 +207,7 @@ pub(crate) fn name_conflicts(
     report: &mut Report,
     kernels: &[Kernel],
     links: &[Link],
-) {
+) -> bool {
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let starts: [&[f64]; 2] = [values, &start];
     let sets_in = |eqs: &Equations| -> Vec<ConflictSet> {
@@ -241,7 +243,7 @@ pub(crate) fn name_conflicts(
     }
     let whole = if sets.is_empty() {
         let Ok(eqs) = Equations::new(sys, group, &start) else {
-            return;
+            return false;
         };
         sets = sets_in(&eqs);
         Some(eqs)
@@ -250,9 +252,12 @@ pub(crate) fn name_conflicts(
     };
     report.failed.clear();
     report.failed_entities.clear();
+    // Shown beyond doubt only by a set checked member by member: a large set that fails as
+    // a whole may fail only because Newton folded the sketch on its way.
+    let proven = sets.iter().any(|s| s.verified);
     let members: Vec<Member> = if sets.is_empty() {
         report.outcome = Outcome::DidNotConverge;
-        let Some(eqs) = whole else { return };
+        let Some(eqs) = whole else { return false };
         let lin = eqs.linearise(values);
         (0..eqs.rows)
             .filter(|&i| !(lin.r[i].abs() <= cfg.tolerance))
@@ -263,7 +268,7 @@ pub(crate) fn name_conflicts(
         sets.into_iter().flat_map(|s| s.members).collect()
     };
     if !cfg.find_failed {
-        return;
+        return proven;
     }
     for m in members {
         match m {
@@ -275,6 +280,7 @@ pub(crate) fn name_conflicts(
     report.failed.dedup();
     report.failed_entities.sort_unstable();
     report.failed_entities.dedup();
+    proven
 }
 
 /// The most constraints a conflict is searched among, one solve per member, when no
@@ -330,13 +336,16 @@ fn conflict_sets(
         if out.iter().any(|o| o.members.iter().all(|m| c.contains(m))) {
             continue;
         }
-        let (members, verified) = if c.len() <= minimise_up_to {
-            minimal::minimise(eqs, &c, starts, cfg)
+        // A set too large to shrink is kept when it fails as a whole, but not called
+        // verified: no one checked that every member is needed.
+        let (members, verified, fails) = if c.len() <= minimise_up_to {
+            let (m, v) = minimal::minimise(eqs, &c, starts, cfg);
+            (m, v, v)
         } else {
             let fails = minimal::fails(eqs, &c, starts, cfg);
-            (c, fails)
+            (c, false, fails)
         };
-        if verified && done.insert(members.clone()) {
+        if fails && done.insert(members.clone()) {
             out.push(ConflictSet { members, verified });
         }
     }

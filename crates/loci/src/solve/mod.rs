@@ -70,7 +70,40 @@ pub(crate) fn solve_core(
     cfg.check()?;
     sys.validate()?;
     check_group(sys, group)?;
-    solve_values(sys, group, dragged, cfg, &mut Cache::default())
+    let mut cache = Cache::default();
+    let (report, values) = solve_values(sys, group, dragged, cfg, &mut cache, None)?;
+    if !report.outcome.is_ok() {
+        if let Some(done) = constructed(sys, group, dragged, cfg, &mut cache)? {
+            return Ok(done);
+        }
+    }
+    Ok((report, values))
+}
+
+/// The solve of `group` from a solution built up one constraint at a time
+/// ([`crate::diagnose::construct_group`]), when one can be built: its report and values.
+/// `cache` then holds the equations compiled at that solution, whose branches (which way an
+/// angle turns) are the ones chosen as each constraint was added.
+fn constructed(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    cache: &mut Cache,
+) -> Result<Option<(Report, Vec<f64>)>, SolveError> {
+    let Some(built) = crate::diagnose::construct_group(sys, group, dragged, cfg) else {
+        return Ok(None);
+    };
+    *cache = Cache::default();
+    let (report, values) = solve_values(sys, group, dragged, cfg, cache, Some(&built))?;
+    if report.outcome.is_ok() {
+        Ok(Some((report, values)))
+    } else {
+        // Not expected (every equation held where the build ended); the next solve starts
+        // from the drawing's branches again.
+        *cache = Cache::default();
+        Ok(None)
+    }
 }
 
 /// A solve of a group that nothing belongs to is a mistake (a wrong number, an empty file),
@@ -163,7 +196,7 @@ fn solve_cached(
     cfg: &Config,
     cache: &mut Cache,
 ) -> Result<Report, SolveError> {
-    let (mut report, values) = solve_values(sys, group, dragged, cfg, cache)?;
+    let (mut report, mut values) = solve_values(sys, group, dragged, cfg, cache, None)?;
     if matches!(
         report.outcome,
         Outcome::Inconsistent | Outcome::DidNotConverge
@@ -174,7 +207,7 @@ fn solve_cached(
         // failures pay for it. A solve that did not converge becomes inconsistent when such a
         // set is found: the rows of an impossible system become dependent only at its
         // least-squares point, which Newton may not reach.
-        crate::diagnose::name_conflicts(
+        let proven = crate::diagnose::name_conflicts(
             sys,
             group,
             &values,
@@ -183,6 +216,13 @@ fn solve_cached(
             &cache.kernels,
             &cache.links,
         );
+        // Nothing shown to fail on its own: Newton from the whole drawing may have folded the
+        // sketch on its way. Build the solution up one constraint at a time instead.
+        if !proven {
+            if let Some((again, at)) = constructed(sys, group, dragged, cfg, cache)? {
+                (report, values) = (again, at);
+            }
+        }
     }
     // Values are written back only when every constraint holds, as libslvs does: a failed
     // solve leaves the caller's parameters as they were.
@@ -199,10 +239,14 @@ fn solve_values(
     dragged: &[ParamId],
     cfg: &Config,
     cache: &mut Cache,
+    start: Option<&[f64]>,
 ) -> Result<(Report, Vec<f64>), SolveError> {
     let params = sys.params();
     let np = params.len();
-    let mut values: Vec<f64> = params.iter().map(|p| p.val).collect();
+    let mut values: Vec<f64> = match start {
+        Some(v) => v.to_vec(),
+        None => params.iter().map(|p| p.val).collect(),
+    };
     let key = sys.structure_key();
     if cache.key == Some(key) && !still_duplicates(sys, &cache.duplicates) {
         // A value edit made copies of a constraint different equations again.

@@ -1,0 +1,147 @@
+//! Building a solution up one constraint at a time, as the user drew it, when Newton cannot
+//! reach one from the whole drawing at once.
+//!
+//! A sketch far from every solution (dimensions typed in after drawing freehand, a random
+//! system) can send Newton's steps into a fold: a line collapses to a point, its angle and
+//! its distances lose their directions, and the solve stops at a least-squares point where
+//! some rows have become dependent. The rank test then sees a conflict where there is none.
+//! Adding the constraints one at a time, each solved from where the last one left the sketch
+//! with the least movement, keeps every intermediate sketch a solution of the constraints
+//! added so far, so each step starts near a solution: this is how the sketch would move if
+//! the user had added the constraints one by one. A constraint that cannot be added where it
+//! comes is tried again after the others; when some still cannot be added, the whole build
+//! starts again from the drawing with them first (the order matters: a dimension added early
+//! can choose the branch a later one needs).
+//!
+//! On a sketch whose constraints truly conflict, some constraint can never be added and the
+//! build gives up after [`ROUNDS`] orders; it is only tried on groups of at most
+//! [`CONSTRUCT_UP_TO`] equations' owners, so a conflict in a large sketch costs no more than
+//! before.
+
+use super::minimal::solve_alone;
+use super::unmerged::Equations;
+use crate::equations::Owner;
+use crate::model::{GroupId, ParamId, System};
+use crate::solve::Config;
+
+/// The most kernels (constraints and entities' implicit conditions) a build is tried on:
+/// each step is one solve of the constraints added so far, and a build of `n` takes up to
+/// `ROUNDS * n` steps.
+pub(crate) const CONSTRUCT_UP_TO: usize = 120;
+
+/// How many orders are tried, each from the drawing, before the build gives up.
+pub(crate) const ROUNDS: usize = 4;
+
+/// Each step is tried from where the last left the sketch, then from generic points this far
+/// (relative) around it: a fold of the sketch where the step starts is unlikely to be one a
+/// little way off.
+const NUDGES: [f64; 3] = [0.0, 1e-2, 1e-1];
+
+/// The iterations each step gets: a step starts at a solution of all but one of its
+/// constraints, so one that needs more is better tried later, from elsewhere.
+const STEP_ITERATIONS: usize = 1000;
+
+/// Values (one per parameter) where every equation of `kernels` holds, built up from `start`
+/// one constraint at a time; `None` if no order tried gets them all to hold.
+pub(crate) fn construct(
+    eqs: &Equations,
+    kernels: &[usize],
+    start: &[f64],
+    scale_of_param: &dyn Fn(usize) -> f64,
+    cfg: &Config,
+    rechoose: bool,
+) -> Option<Vec<f64>> {
+    if kernels.len() > CONSTRUCT_UP_TO {
+        return None;
+    }
+    let cfg = &cfg
+        .clone()
+        .with_max_iterations(cfg.max_iterations.min(STEP_ITERATIONS))
+        .with_find_failed(false);
+    // Entities' implicit conditions (unit quaternions, equal arc radii) are part of every
+    // sketch: they come first, all together. Then the constraints in the order they were
+    // added.
+    let (base, mut order): (Vec<usize>, Vec<usize>) = kernels
+        .iter()
+        .partition(|&&k| matches!(eqs.kernels[k].owner, Owner::Entity(_)));
+    let mut xs = Vec::new();
+    for _ in 0..ROUNDS {
+        let mut defs = eqs.kernels.clone();
+        let mut values = start.to_vec();
+        let mut have = base.clone();
+        if !have.is_empty()
+            && !solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg, 0.0)
+        {
+            return None;
+        }
+        let mut pending = order.clone();
+        loop {
+            let mut progressed = false;
+            let mut rest = Vec::new();
+            for k in pending {
+                have.push(k);
+                if rechoose {
+                    // As if the user added it to the sketch as it stands now: its branch
+                    // (which way an angle turns, which side of a line an arc touches) is
+                    // the one the sketch shows now, not the drawing's.
+                    let kern = &mut defs[k];
+                    kern.gather(&values, &mut xs);
+                    kern.eq.choose(&xs);
+                    if kern.eq.rows(&xs) != kern.rows {
+                        kern.eq = eqs.kernels[k].eq.clone();
+                    }
+                }
+                if NUDGES
+                    .iter()
+                    .any(|&n| solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg, n))
+                {
+                    progressed = true;
+                } else {
+                    have.pop();
+                    rest.push(k);
+                }
+            }
+            pending = rest;
+            if pending.is_empty() || !progressed {
+                break;
+            }
+        }
+        if pending.is_empty() {
+            return Some(values);
+        }
+        // Next time from the drawing with the ones that could not be added first.
+        let mut next = pending.clone();
+        next.extend(order.iter().filter(|k| !pending.contains(k)));
+        if next == order {
+            return None;
+        }
+        order = next;
+    }
+    None
+}
+
+/// [`construct`] on every equation of `group`, from the values in `sys`, with `dragged`
+/// parameters moving least: values for every parameter where all of them hold, or `None`
+/// (also for groups of more than [`CONSTRUCT_UP_TO`] constraints and conditions).
+pub(crate) fn construct_group(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+) -> Option<Vec<f64>> {
+    let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
+    let eqs = Equations::new(sys, group, &start).ok()?;
+    let kernels: Vec<usize> = (0..eqs.kernels.len()).collect();
+    if kernels.len() > CONSTRUCT_UP_TO {
+        return None;
+    }
+    let dragged: Vec<usize> = dragged.iter().filter_map(|&h| sys.param_index(h)).collect();
+    let scale = |p: usize| {
+        if dragged.contains(&p) {
+            cfg.dragged_scale
+        } else {
+            1.0
+        }
+    };
+    construct(&eqs, &kernels, &start, &scale, cfg, true)
+}
