@@ -54,27 +54,11 @@ const MERGED_COINCIDENT: &str = "a conflict between a distance and the coinciden
 /// with the reason. The test tolerates these and says when one of them passes, so that it
 /// can be removed as the fix lands.
 const KNOWN_FAILURES: &[(u64, &str)] = &[
-    (
-        4,
-        "2D conflicting (a horizontal line's midpoint): the set the rank test names holds alone, \
-        and no failing set is found: did_not_converge where SolveSpace says inconsistent",
-    ),
     (53, MERGED_COINCIDENT),
     (
         310,
         "calls the system inconsistent (rightly) but names three parallels that are only \
         redundant and hold alone, not the two distances that contradict",
-    ),
-    (
-        516,
-        "2D base: three angles, one the sum of the other two, all measured from the truth; \
-        from the start loci calls them inconsistent (SolveSpace too)",
-    ),
-    (
-        4650,
-        "2D base: calls a satisfiable system inconsistent, naming angle(a, b) and angle(b, a) \
-        of the same value (the 2D angle's branch is chosen for each from the start); SolveSpace \
-        solves it",
     ),
 ];
 

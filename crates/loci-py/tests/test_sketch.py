@@ -1,6 +1,7 @@
 """``loci.Sketch``: shapes, user and soft constraints, dragging, files."""
 
 import math
+import threading
 from pathlib import Path
 
 import numpy as np
@@ -167,3 +168,53 @@ def test_system_and_check() -> None:
     assert d.dof == 1
     sys = s.system
     assert isinstance(sys, loci.System) and sys.groups == [1, 2]
+
+
+def test_the_gil_is_released_while_a_solve_runs() -> None:
+    # A 20,000-segment staircase (the Python benchmark's chain) takes tens of milliseconds to
+    # solve. While it does, the main thread keeps running Python code: it ticks all through
+    # the middle half of the solve. Were the GIL held during the solve, no tick could fall
+    # there (the solving thread would hold it from the call to the return).
+    import sys
+    import time
+
+    n = 20_000
+    exact = [(0.0, 0.0)]
+    for i in range(n):
+        x, y = exact[-1]
+        exact.append((x + 5.0, y) if i % 2 == 0 else (x, y + (3.0 if (i // 2) % 2 == 0 else -3.0)))
+    s = loci.Sketch()
+    pts = [
+        s.add_point(x + (0.25 * math.sin(1.3 * k) if k else 0.0), y + (0.25 * math.cos(0.7 * k) if k else 0.0))
+        for k, (x, y) in enumerate(exact)
+    ]
+    lines = [s.add_line(pts[i], pts[i + 1]) for i in range(n)]
+    s.fix(pts[0])
+    s.horizontal(lines[0])
+    for i in range(n):
+        s.length(lines[i], 5.0 if i % 2 == 0 else 3.0)
+    for i in range(1, n):
+        s.perpendicular(lines[i - 1], lines[i])
+    window: "list[float]" = []
+
+    def solve() -> None:
+        window.append(time.perf_counter())
+        s.solve()
+        window.append(time.perf_counter())
+
+    old = sys.getswitchinterval()
+    sys.setswitchinterval(1e-4)
+    try:
+        worker = threading.Thread(target=solve)
+        ticks: "list[float]" = []
+        worker.start()
+        while worker.is_alive():
+            ticks.append(time.perf_counter())
+        worker.join()
+    finally:
+        sys.setswitchinterval(old)
+    t0, t1 = window
+    assert t1 - t0 > 0.002, f"the solve took {t1 - t0:.4f} s: too short to tell"
+    lo, hi = t0 + 0.25 * (t1 - t0), t1 - 0.25 * (t1 - t0)
+    inside = sum(1 for t in ticks if lo < t < hi)
+    assert inside >= 10, f"{inside} ticks in the middle of a {t1 - t0:.3f} s solve"

@@ -558,3 +558,46 @@ fn a_long_conflict_is_named_whole_by_the_rank_test_and_checked_by_diagnosis() {
     assert!(d.conflicting[0].verified);
     assert_eq!(d.conflicting[0].members.len(), 13);
 }
+
+/// An angle to a line of no length is undefined: it never holds, whatever its value. Here the
+/// line's ends are made one point by a coincidence, so no solve can give it a direction, and
+/// a horizontal and a vertical line cannot be 41 degrees apart once it is gone. (Its residual
+/// once read zero there, so building the sketch up one constraint at a time "solved" it by
+/// collapsing the line.)
+#[test]
+fn an_angle_to_a_line_of_no_length_never_holds() {
+    for coincident in [true, false] {
+        let mut s = Sketch::new();
+        let a = s.point(301, 2, [0.0, 0.0]);
+        let b = s.point(302, 2, [0.0, 0.0]);
+        let c = s.point(303, 2, [3.0, 1.0]);
+        let ab = s.line(304, 2, a, b);
+        let bc = s.line(305, 2, b, c);
+        s.on_points(2, K::WhereDragged, a, 0, 0.0);
+        if coincident {
+            s.on_points(2, K::PointsCoincident, a, b, 0.0);
+        }
+        let angle = s.on_entities(2, K::Angle, ab, bc, 30.0);
+        let rep = s.sys.solve_group(2).unwrap();
+        if coincident {
+            // No claim, and the angle named (as left unsatisfied or in conflict).
+            assert!(!rep.outcome.is_ok(), "{rep:?}");
+            assert!(rep.failed.contains(&angle.into()), "{rep:?}");
+            continue;
+        }
+        assert_eq!(rep.outcome, Outcome::Okay, "{rep:?}");
+        // Drawn with no length, the line is moved apart (as little as it takes) and the angle
+        // then holds.
+        let (pa, pb, pc) = (s.uv(a), s.uv(b), s.uv(c));
+        assert!(dist(pa, pb) > 0.0, "the line has a length: {pa:?} {pb:?}");
+        let (u, v) = (
+            [pa[0] - pb[0], pa[1] - pb[1]],
+            [pb[0] - pc[0], pb[1] - pc[1]],
+        );
+        let cos = (u[0] * v[0] + u[1] * v[1]) / (dist(pa, pb) * dist(pb, pc));
+        assert!(
+            (cos.abs() - 30f64.to_radians().cos()).abs() < 1e-9,
+            "cos {cos}"
+        );
+    }
+}

@@ -20,26 +20,22 @@
 
 use super::minimal::solve_alone;
 use super::unmerged::Equations;
-use crate::equations::Owner;
+use crate::equations::{EqKind, Equation, Owner};
+use crate::model::ConstraintKind;
 use crate::model::{GroupId, ParamId, System};
 use crate::solve::Config;
 
 /// The most kernels (constraints and entities' implicit conditions) a build is tried on:
 /// each step is one solve of the constraints added so far, and a build of `n` takes up to
 /// `ROUNDS * n` steps.
-pub(crate) const CONSTRUCT_UP_TO: usize = 120;
+pub(crate) const CONSTRUCT_UP_TO: usize = 64;
 
 /// How many orders are tried, each from the drawing, before the build gives up.
 pub(crate) const ROUNDS: usize = 4;
 
-/// Each step is tried from where the last left the sketch, then from generic points this far
-/// (relative) around it: a fold of the sketch where the step starts is unlikely to be one a
-/// little way off.
-const NUDGES: [f64; 3] = [0.0, 1e-2, 1e-1];
-
 /// The iterations each step gets: a step starts at a solution of all but one of its
 /// constraints, so one that needs more is better tried later, from elsewhere.
-const STEP_ITERATIONS: usize = 1000;
+const STEP_ITERATIONS: usize = 20;
 
 /// Values (one per parameter) where every equation of `kernels` holds, built up from `start`
 /// one constraint at a time; `None` if no order tried gets them all to hold.
@@ -69,9 +65,7 @@ pub(crate) fn construct(
         let mut defs = eqs.kernels.clone();
         let mut values = start.to_vec();
         let mut have = base.clone();
-        if !have.is_empty()
-            && !solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg, 0.0)
-        {
+        if !have.is_empty() && !solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg) {
             return None;
         }
         let mut pending = order.clone();
@@ -80,21 +74,31 @@ pub(crate) fn construct(
             let mut rest = Vec::new();
             for k in pending {
                 have.push(k);
+                let mut added;
                 if rechoose {
                     // As if the user added it to the sketch as it stands now: its branch
                     // (which way an angle turns, which side of a line an arc touches) is
-                    // the one the sketch shows now, not the drawing's.
+                    // the one the sketch shows now, not the drawing's; and if that one
+                    // cannot hold, the other way an angle can turn.
                     let kern = &mut defs[k];
                     kern.gather(&values, &mut xs);
                     kern.eq.choose(&xs);
                     if kern.eq.rows(&xs) != kern.rows {
                         kern.eq = eqs.kernels[k].eq.clone();
                     }
+                    let other = other_turn(&kern.eq);
+                    added = solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg);
+                    if let (false, Some(eq)) = (added, other) {
+                        let chosen = std::mem::replace(&mut defs[k].eq, eq);
+                        added = solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg);
+                        if !added {
+                            defs[k].eq = chosen;
+                        }
+                    }
+                } else {
+                    added = solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg);
                 }
-                if NUDGES
-                    .iter()
-                    .any(|&n| solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg, n))
-                {
+                if added {
                     progressed = true;
                 } else {
                     have.pop();
@@ -120,6 +124,22 @@ pub(crate) fn construct(
     None
 }
 
+/// A 2D angle (or equal angles) turning the other way: the other branch [`Equation::choose`]
+/// picks between.
+pub(crate) fn other_turn(eq: &Equation) -> Option<Equation> {
+    let turns = matches!(
+        eq.kind,
+        EqKind::Constraint(ConstraintKind::Angle | ConstraintKind::EqualAngle)
+    );
+    if !turns || eq.wp.is_none() {
+        return None;
+    }
+    let mut other = eq.clone();
+    other.choice ^= 1;
+    other.prepare();
+    Some(other)
+}
+
 /// [`construct`] on every equation of `group`, from the values in `sys`, with `dragged`
 /// parameters moving least: values for every parameter where all of them hold, or `None`
 /// (also for groups of more than [`CONSTRUCT_UP_TO`] constraints and conditions).
@@ -129,6 +149,15 @@ pub(crate) fn construct_group(
     dragged: &[ParamId],
     cfg: &Config,
 ) -> Option<Vec<f64>> {
+    // Counted before anything is compiled: a large sketch in conflict pays nothing here.
+    let constraints = sys
+        .constraints()
+        .iter()
+        .filter(|c| c.group == group && !c.reference)
+        .count();
+    if constraints > CONSTRUCT_UP_TO {
+        return None;
+    }
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let eqs = Equations::new(sys, group, &start).ok()?;
     let kernels: Vec<usize> = (0..eqs.kernels.len()).collect();

@@ -5,7 +5,7 @@
 use super::construct::construct;
 use super::report::Member;
 use super::unmerged::{Equations, CONSTANT};
-use crate::equations::{Kernel, Rows};
+use crate::equations::{Equation, Kernel, Rows};
 use crate::solve::newton::{Component, Scratch};
 use crate::solve::Config;
 use std::collections::HashMap;
@@ -23,7 +23,7 @@ pub(crate) fn consistent(
     starts: &[&[f64]],
     cfg: &Config,
 ) -> bool {
-    check(eqs, kernels, starts, cfg, false)
+    check(eqs, kernels, starts, cfg, false, true)
 }
 
 /// [`consistent`], or with `quick` a check on SolveSpace's budget for a whole sketch and from
@@ -31,7 +31,20 @@ pub(crate) fn consistent(
 /// constraints through a grid), whose failing solves rarely stall early and at the full budget
 /// took 50 times as long to check as to find. Never for the deletion filter, whose verdicts on
 /// parts of a set must be right for the set to be minimal.
-fn check(eqs: &Equations, kernels: &[usize], starts: &[&[f64]], cfg: &Config, quick: bool) -> bool {
+///
+/// With `build`, a set that fails from every start is also built up one constraint at a time
+/// from the drawing ([`construct`]) before it counts as failing: Newton from the drawing can
+/// fold the sketch where the set could hold (s0026: six constraints that hold together failed
+/// from every start). The build costs a solve per member and order tried, so the deletion
+/// filter uses it on the whole set and on the set it ends with only.
+fn check(
+    eqs: &Equations,
+    kernels: &[usize],
+    starts: &[&[f64]],
+    cfg: &Config,
+    quick: bool,
+    build: bool,
+) -> bool {
     // A set is called a conflict only when solves that could have succeeded fail: never on a
     // budget of iterations cut short by the caller.
     let budget = if quick {
@@ -47,16 +60,56 @@ fn check(eqs: &Equations, kernels: &[usize], starts: &[&[f64]], cfg: &Config, qu
     {
         return true;
     }
-    // Newton from the drawing can fold the sketch where the set could hold: built up one
-    // constraint at a time instead, it may. Not for large sets checked quickly.
-    !quick
-        && starts
-            .last()
-            .is_some_and(|start| construct(eqs, kernels, start, &|_| 1.0, cfg, true).is_some())
+    build
+        && starts.last().is_some_and(|start| {
+            construct(eqs, kernels, start, &|_| 1.0, cfg, true).is_some()
+                || other_turns_hold(eqs, kernels, start, cfg)
+        })
 }
 
-/// Sets of more constraints than this, checked whole, are checked quickly.
-const LARGE_SET: usize = 16;
+/// The most 2D angles whose every combination of turns a check tries.
+const MAX_TURNING: usize = 3;
+
+/// Whether the set holds, solved from `start`, with some of its 2D angles turning the other
+/// way: a 2D angle keeps the turn it is drawn with, but a conflict is named only when no way
+/// of turning its angles lets the set hold (two angles that add up to a right angle between
+/// a horizontal and a vertical line hold only when they turn the same way).
+fn other_turns_hold(eqs: &Equations, kernels: &[usize], start: &[f64], cfg: &Config) -> bool {
+    let turning: Vec<(usize, Equation)> = kernels
+        .iter()
+        .filter_map(|&k| super::construct::other_turn(&eqs.kernels[k].eq).map(|eq| (k, eq)))
+        .collect();
+    if turning.is_empty() || turning.len() > MAX_TURNING {
+        return false;
+    }
+    let mut scratch = Scratch::default();
+    (1..1usize << turning.len()).any(|mask| {
+        let mut defs = eqs.kernels.clone();
+        for (i, (k, eq)) in turning.iter().enumerate() {
+            if mask & (1 << i) != 0 {
+                defs[*k].eq = eq.clone();
+            }
+        }
+        let mut v = start.to_vec();
+        matches!(
+            solve_set(
+                eqs,
+                &defs,
+                kernels,
+                &mut v,
+                &|_| 1.0,
+                cfg,
+                0.0,
+                &mut scratch
+            ),
+            Alone::Converged
+        )
+    })
+}
+
+/// Sets of more constraints than this, checked whole, are checked quickly: from the given
+/// starts on a short budget, and not built up one constraint at a time.
+pub(crate) const LARGE_SET: usize = 16;
 
 /// The iterations a solve of a large set gets before it counts as failing.
 const LARGE_SET_ITERATIONS: usize = 50;
@@ -107,22 +160,19 @@ pub(crate) fn solve_alone(
     values: &mut [f64],
     scale_of_param: &dyn Fn(usize) -> f64,
     cfg: &Config,
-    nudge: f64,
 ) -> bool {
     let mut scratch = Scratch::default();
-    matches!(
-        solve_set(
-            eqs,
-            defs,
-            kernels,
-            values,
-            scale_of_param,
-            cfg,
-            nudge,
-            &mut scratch
-        ),
-        Alone::Converged
-    )
+    let end = solve_set(
+        eqs,
+        defs,
+        kernels,
+        values,
+        scale_of_param,
+        cfg,
+        0.0,
+        &mut scratch,
+    );
+    matches!(end, Alone::Converged)
 }
 
 /// [`solve_alone`], from `values` moved by `nudge` (relative) in a generic direction.
@@ -202,7 +252,10 @@ fn solve_set(
 /// deletion filter's one solve per member.
 pub(crate) fn fails(eqs: &Equations, set: &[Member], starts: &[&[f64]], cfg: &Config) -> bool {
     let kernels: Option<Vec<usize>> = set.iter().map(|&m| eqs.kernel_of(m)).collect();
-    kernels.is_some_and(|k| !check(eqs, &k, starts, cfg, k.len() > LARGE_SET))
+    kernels.is_some_and(|k| {
+        let quick = k.len() > LARGE_SET;
+        !check(eqs, &k, starts, cfg, quick, !quick)
+    })
 }
 
 /// Shrinks `set` to a minimal conflict by the deletion filter: a member whose removal leaves
@@ -233,13 +286,24 @@ pub(crate) fn minimise(
         Member::Entity(e) => (0, e.0),
         Member::Constraint(c) => (1, c.0),
     });
-    for m in trials {
-        if keep.len() <= 1 {
-            break;
+    let whole = keep.clone();
+    // Parts judged by Newton alone first (cheap); the set kept must then also resist being
+    // built. When it does not, a part was called failing that holds: the filter runs again
+    // with every part built up too, so that what it keeps fails for certain.
+    for build in [false, true] {
+        keep.clone_from(&whole);
+        for &m in &trials {
+            if keep.len() <= 1 {
+                break;
+            }
+            let rest: Vec<usize> = keep.iter().filter(|x| x.0 != m).map(|x| x.1).collect();
+            if !check(eqs, &rest, starts, cfg, false, build) {
+                keep.retain(|x| x.0 != m);
+            }
         }
-        let rest: Vec<usize> = keep.iter().filter(|x| x.0 != m).map(|x| x.1).collect();
-        if !consistent(eqs, &rest, starts, cfg) {
-            keep.retain(|x| x.0 != m);
+        let kept: Vec<usize> = keep.iter().map(|x| x.1).collect();
+        if build || keep.len() == all.len() || !consistent(eqs, &kept, starts, cfg) {
+            break;
         }
     }
     let mut out: Vec<Member> = keep.into_iter().map(|x| x.0).collect();

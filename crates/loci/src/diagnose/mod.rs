@@ -252,9 +252,12 @@ pub(crate) fn name_conflicts(
     };
     report.failed.clear();
     report.failed_entities.clear();
-    // Shown beyond doubt only by a set checked member by member: a large set that fails as
-    // a whole may fail only because Newton folded the sketch on its way.
-    let proven = sets.iter().any(|s| s.verified);
+    // Shown only by a set that failed on its own from where the solve stopped, from the
+    // drawing and built up one constraint at a time: a large set, checked quickly, may fail
+    // only because Newton folded the sketch on its way.
+    let proven = sets
+        .iter()
+        .any(|s| s.verified || s.members.len() <= minimal::LARGE_SET);
     let members: Vec<Member> = if sets.is_empty() {
         report.outcome = Outcome::DidNotConverge;
         let Some(eqs) = whole else { return false };

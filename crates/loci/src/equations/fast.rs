@@ -96,6 +96,8 @@ fn angle(e: &Equation, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f6
     res[0] = num.atan2(den);
     let r2 = num * num + den * den;
     if r2 == 0.0 {
+        // A line of no length: the angle is undefined and does not hold.
+        res[0] = super::lines::UNDEFINED_ANGLE;
         scatter(&[], active, jac);
         return true;
     }

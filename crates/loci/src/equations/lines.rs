@@ -143,10 +143,26 @@ pub(super) fn angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
             // |a||b| sin(angle) and |a||b| cos(angle): atan2 does not need them normalised.
             let (c, s) = (a.dot(b), a.cross(b).z);
             let (st, ct) = (t.sin(), t.cos());
-            out.push((s * ct - c * st).atan2(c * ct + s * st));
+            out.push(undefined_or(s * ct - c * st, c * ct + s * st));
         }
     }
 }
+
+/// `atan2(sin, cos)` of an angle difference given by its sine and cosine scaled by the
+/// lengths of the lines; when a line has no length (both zero) the angle is undefined and
+/// holds for no target: the residual is then the largest an angle can be, with no
+/// derivatives, so the solve moves the line's ends apart instead of accepting it.
+pub(super) fn undefined_or<S: Scalar>(sin: S, cos: S) -> S {
+    if sin.val() == 0.0 && cos.val() == 0.0 {
+        S::cst(UNDEFINED_ANGLE)
+    } else {
+        sin.atan2(cos)
+    }
+}
+
+/// The residual of an angle with a line of no length: half a turn, the most any angle can be
+/// off by.
+pub(crate) const UNDEFINED_ANGLE: f64 = std::f64::consts::PI;
 
 pub(super) fn choose_equal_angle(e: &Equation, g: &Geo<f64>) -> u8 {
     if e.wp.is_none() {
@@ -189,7 +205,7 @@ pub(super) fn equal_angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>
             // sin and cos of a1 - s a2, turned by 180 degrees for supplementary angles.
             let (sd, cd) = (s1 * c2 - c1 * s2, c1 * c2 + s1 * s2);
             let (sd, cd) = if e.other { (-sd, -cd) } else { (sd, cd) };
-            out.push(sd.atan2(cd));
+            out.push(undefined_or(sd, cd));
         }
     }
 }
