@@ -38,6 +38,11 @@ pub struct Config {
     /// iteration (a 1,000-segment 3D chain with 529 degrees of freedom took 39 iterations
     /// instead of 6); `false` is the faster SolveSpace behaviour.
     pub nearest: bool,
+    /// Whether the slide to the nearest solution is folded into Newton's steps (each the
+    /// projection of the drawing onto the linearised equations) rather than run after Newton
+    /// has reached a solution. Both end at the same solution, to the projection's tolerance;
+    /// the separate slide is kept to check that.
+    pub(crate) fold_slide: bool,
 }
 
 impl Default for Config {
@@ -50,6 +55,7 @@ impl Default for Config {
             find_failed: true,
             verify_conflicts_up_to: 8,
             nearest: true,
+            fold_slide: true,
         }
     }
 }

@@ -70,6 +70,12 @@ pub(crate) struct Scratch {
     jl: Vec<f64>,
     /// The starting point, for [`Component::project`].
     x0: Vec<f64>,
+    /// The first solution a sliding solve reached, and its residuals: the answer if the slide
+    /// towards the nearest one fails.
+    keep: Vec<f64>,
+    r_keep: Vec<f64>,
+    /// The movement towards the starting point, in scaled unknowns.
+    dz: Vec<f64>,
 }
 
 /// How many past merits the line search compares a step with.
@@ -573,6 +579,9 @@ impl Component {
             xs,
             jl,
             x0,
+            keep,
+            r_keep,
+            dz,
         } = scratch;
         if cfg.nearest {
             x0.clear();
@@ -588,6 +597,9 @@ impl Component {
             (&mut *dx, ncols),
             (&mut *xt, ncols),
             (&mut *rt, m),
+            (&mut *keep, ncols),
+            (&mut *r_keep, m),
+            (&mut *dz, ncols),
         ] {
             if v.len() != n {
                 v.clear();
@@ -596,7 +608,7 @@ impl Component {
         }
         self.gather_all(kernels, x, values, xs);
         let xs = &mut xs[..];
-        let (r, jn, inv, y, dx, xt, rt) = (
+        let (r, jn, inv, y, dx, xt, rt, keep, r_keep, dz) = (
             &mut r[..],
             &mut jn[..],
             &mut inv[..],
@@ -604,7 +616,11 @@ impl Component {
             &mut dx[..],
             &mut xt[..],
             &mut rt[..],
+            &mut keep[..],
+            &mut r_keep[..],
+            &mut dz[..],
         );
+        let x0 = &x0[..];
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
@@ -624,6 +640,19 @@ impl Component {
         // Iterations since the merit last reached a new low.
         let (mut best, mut since_best) = (f64::INFINITY, 0usize);
         let mut nudges = 0;
+        // Sliding: Newton's steps are themselves the projections of the drawing onto the
+        // equations linearised where they stand, so that they end at the solution nearest the
+        // drawing rather than reach one and then slide along the solutions (half the
+        // iterations on a truss). Only for an under-constrained component (a square one has one
+        // step, which the projection would only round differently), and only while steps are
+        // plain: damped steps do not project, and a solve that needed them slides afterwards
+        // (`project`).
+        let mut fold = false;
+        // The last step was a whole projection step smaller than `PROJECTED`: the solution
+        // nearest the drawing once the equations hold.
+        let mut settled = false;
+        // Whether `keep` holds a solution.
+        let mut held = false;
         loop {
             self.jacobian(kernels, x, r, jn, inv, xs, jl);
             if nudges < MAX_NUDGES && self.nudge_singular(x, r, inv, cfg.tolerance, nudges) {
@@ -635,22 +664,52 @@ impl Component {
             };
             gram.assemble(jn);
             factored = gram.factor(0.0, cfg.rank_tolerance);
+            if iterations == 0 && cfg.nearest && factored {
+                fold = cfg.fold_slide && m - gram.dropped().len() < ncols;
+            }
+            // The slide converges linearly where the equations curve much over the distance
+            // to the drawing: it gets as many steps as the separate slide would.
+            let sliding = fold && damping.is_none() && iterations < MAX_PROJECTION + MAX_RESTORE;
             let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-            if max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite()) {
+            let holds = max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite());
+            // A start that already holds is its own nearest solution.
+            if holds && (!sliding || settled || iterations == 0 || iterations >= cfg.max_iterations)
+            {
                 converged = true;
                 break;
             }
             if !factored || iterations >= cfg.max_iterations {
                 break;
             }
+            if holds {
+                // A solution, not yet the nearest: kept in case the slide goes wrong.
+                keep.copy_from_slice(x);
+                r_keep.copy_from_slice(r);
+                held = true;
+            }
             iterations += 1;
-            let step = |gram: &mut Gram, y: &mut [f64], dx: &mut [f64]| {
+            if sliding {
+                for c in 0..ncols {
+                    dz[c] = (x0[c] - x[c]) / self.scale[c];
+                }
+            }
+            // The step of least (weighted) movement from `x`, or, with `project`, from the
+            // drawing: `dz + Jnᵀ y` with `G y = -rn - Jn dz`, the point nearest `dz` on
+            // `Jn d = -rn`.
+            let step = |gram: &mut Gram, y: &mut [f64], dx: &mut [f64], project: bool| {
                 for i in 0..m {
                     y[i] = -r[i] * inv[i];
                 }
+                if project {
+                    for (c, col) in self.columns.iter().enumerate() {
+                        for &(row, idx) in col {
+                            y[row as usize] -= jn[idx as usize] * dz[c];
+                        }
+                    }
+                }
                 gram.solve(y);
                 for (c, col) in self.columns.iter().enumerate() {
-                    let mut acc = 0.0;
+                    let mut acc = if project { dz[c] } else { 0.0 };
                     for &(row, idx) in col {
                         acc += jn[idx as usize] * y[row as usize];
                     }
@@ -667,7 +726,7 @@ impl Component {
                                     xt: &mut [f64],
                                     rt: &mut [f64],
                                     xs: &mut [f64]| {
-                step(gram, y, dx);
+                step(gram, y, dx, false);
                 for c in 0..ncols {
                     xt[c] = x[c] + dx[c];
                 }
@@ -706,9 +765,25 @@ impl Component {
             // Non-monotone steps that find no new low for a whole window are wandering (an
             // impossible triangle climbed from 323 to 690 and crawled there with steps of 1e-8
             // for 40 iterations): switch to damped steps, which descend monotonically.
-            if damping.is_none() && since_best < NONMONOTONE {
+            if sliding && holds {
+                // From a solution, a whole projection step, as the equations are off by no
+                // more than rounding; the steps after it restore them. The search starts
+                // afresh from where it lands.
+                step(gram, y, dx, true);
+                for c in 0..ncols {
+                    xt[c] = x[c] + dx[c];
+                }
+                self.residuals(kernels, xt, rt, xs);
+                accepted = rt.iter().all(|v| v.is_finite());
+                alpha = 1.0;
+                history.clear();
+                (best, since_best) = (f64::INFINITY, 0);
+                if !accepted {
+                    break;
+                }
+            } else if damping.is_none() && since_best < NONMONOTONE {
                 // Newton step with backtracking.
-                step(gram, y, dx);
+                step(gram, y, dx, sliding);
                 for _ in 0..30 {
                     for c in 0..ncols {
                         xt[c] = x[c] + alpha * dx[c];
@@ -720,6 +795,12 @@ impl Component {
                         break;
                     }
                     alpha *= 0.5;
+                }
+                if sliding && (!accepted || alpha < 1.0) {
+                    // The pull towards the drawing costs more than it gains here (a solution
+                    // far from it, across much curvature): plain steps from now on, and the
+                    // slide once they have reached a solution.
+                    fold = false;
                 }
             }
             if !accepted && damping.is_some() && factored {
@@ -766,12 +847,19 @@ impl Component {
             }
             alpha_prev = alpha;
             x.copy_from_slice(xt);
+            settled = sliding
+                && alpha == 1.0
+                && dx
+                    .iter()
+                    .zip(x.iter())
+                    .all(|(d, v)| d.abs() <= PROJECTED * (1.0 + v.abs()));
             // A full Newton step that lands within tolerance and moved the unknowns by next to
             // nothing ends the solve without another Jacobian: the rank and the dependencies
             // are read from the factorisation this step was taken with, at a point closer than
             // rounding would tell apart.
             if damping.is_none()
                 && alpha == 1.0
+                && (settled || !sliding)
                 && rt.iter().all(|v| v.abs() <= cfg.tolerance)
                 && dx
                     .iter()
@@ -783,8 +871,20 @@ impl Component {
                 break;
             }
         }
-        // A start that already holds is its own nearest solution.
-        if converged && cfg.nearest && factored && iterations > 0 {
+        if !converged && held {
+            // The slide from a solution failed: that solution is the answer.
+            x.copy_from_slice(keep);
+            self.jacobian(kernels, x, r, jn, inv, xs, jl);
+            if let Some(gram) = gram_slot.as_mut() {
+                gram.assemble(jn);
+                factored = gram.factor(0.0, cfg.rank_tolerance);
+            }
+            r.copy_from_slice(r_keep);
+            converged = true;
+        }
+        // A start that already holds is its own nearest solution; a solve whose steps slid
+        // is at the nearest one (or as near as the slide's rounds took it).
+        if converged && cfg.nearest && factored && iterations > 0 && !(fold && damping.is_none()) {
             if let Some(gram) = gram_slot.as_mut() {
                 if m - gram.dropped().len() < ncols {
                     let mut work = Work {
