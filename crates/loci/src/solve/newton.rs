@@ -762,9 +762,6 @@ impl Component {
                 // lengths become dependent, is only reached by crawling.
                 break;
             }
-            // Non-monotone steps that find no new low for a whole window are wandering (an
-            // impossible triangle climbed from 323 to 690 and crawled there with steps of 1e-8
-            // for 40 iterations): switch to damped steps, which descend monotonically.
             if sliding && holds {
                 // From a solution, a whole projection step, as the equations are off by no
                 // more than rounding; the steps after it restore them. The search starts
@@ -782,7 +779,10 @@ impl Component {
                     break;
                 }
             } else if damping.is_none() && since_best < NONMONOTONE {
-                // Newton step with backtracking.
+                // Newton step with backtracking. Non-monotone steps that find no new low for a
+                // whole window are wandering (an impossible triangle climbed from 323 to 690
+                // and crawled there with steps of 1e-8 for 40 iterations): damped steps take
+                // over, which descend monotonically.
                 step(gram, y, dx, sliding);
                 for _ in 0..30 {
                     for c in 0..ncols {
@@ -814,7 +814,15 @@ impl Component {
                 // redundant rows follow them.
                 for trunc in TRUNCATIONS {
                     let tol = cfg.rank_tolerance.max(trunc);
-                    if gram.factor(0.0, tol) && full_step_lowers(gram, y, dx, xt, rt, xs) {
+                    // The factorisation at the rank tolerance is the one this iteration began
+                    // with: no other has been made since (plain steps are not tried once
+                    // damping is in use).
+                    let ready = if tol == cfg.rank_tolerance {
+                        factored
+                    } else {
+                        gram.factor(0.0, tol)
+                    };
+                    if ready && full_step_lowers(gram, y, dx, xt, rt, xs) {
                         accepted = true;
                         alpha = 1.0;
                         break;
