@@ -43,6 +43,10 @@ pub struct Config {
     /// has reached a solution. Both end at the same solution, to the projection's tolerance;
     /// the separate slide is kept to check that.
     pub(crate) fold_slide: bool,
+    /// Whether a step after a small one may be solved with the factorisation of the step
+    /// before, refined, instead of a fresh one. The step is the same to the refinement's
+    /// tolerance; the switch is kept to check that.
+    pub(crate) reuse_factor: bool,
 }
 
 impl Default for Config {
@@ -56,6 +60,7 @@ impl Default for Config {
             verify_conflicts_up_to: 8,
             nearest: true,
             fold_slide: true,
+            reuse_factor: true,
         }
     }
 }

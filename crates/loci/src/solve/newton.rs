@@ -76,6 +76,11 @@ pub(crate) struct Scratch {
     r_keep: Vec<f64>,
     /// The movement towards the starting point, in scaled unknowns.
     dz: Vec<f64>,
+    /// A step's right-hand side, the residual of its refinement, and `Jnᵀ y`: for steps
+    /// solved with the factorisation of an earlier iteration.
+    b: Vec<f64>,
+    res: Vec<f64>,
+    v: Vec<f64>,
 }
 
 /// How many past merits the line search compares a step with.
@@ -119,6 +124,15 @@ const MAX_NUDGES: usize = 3;
 /// Thresholds (on pivots of rows of unit length) below which a truncated step treats rows as
 /// dependent, tried in turn once damped steps are in use.
 const TRUNCATIONS: [f64; 4] = [0.0, 1e-8, 1e-6, 1e-4];
+
+/// A step that moved no unknown by more than this (relative to it) leaves `G` close enough
+/// for the next step to be solved with the factorisation it was taken with, refined.
+const REUSE_MOVE: f64 = 1e-4;
+
+/// Refinement of such a step ends when the residual of `G y = b` is this small relative to
+/// `b`, or gives up after `REFINE_SWEEPS` (or a sweep that does not gain a factor of 10).
+const REFINED: f64 = 1e-13;
+const REFINE_SWEEPS: usize = 4;
 
 /// The size of such a move, relative to the equation's residual.
 const NUDGE: f64 = 1e-3;
@@ -582,6 +596,9 @@ impl Component {
             keep,
             r_keep,
             dz,
+            b,
+            res,
+            v,
         } = scratch;
         if cfg.nearest {
             x0.clear();
@@ -600,6 +617,9 @@ impl Component {
             (&mut *keep, ncols),
             (&mut *r_keep, m),
             (&mut *dz, ncols),
+            (&mut *b, m),
+            (&mut *res, m),
+            (&mut *v, ncols),
         ] {
             if v.len() != n {
                 v.clear();
@@ -621,6 +641,7 @@ impl Component {
             &mut dz[..],
         );
         let x0 = &x0[..];
+        let (b, res, v) = (&mut b[..], &mut res[..], &mut v[..]);
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
@@ -653,6 +674,10 @@ impl Component {
         let mut settled = false;
         // Whether `keep` holds a solution.
         let mut held = false;
+        // Whether the factorisation is of an earlier iteration's `G` (see `REUSE_MOVE`); the
+        // rows the last fresh one dropped; the largest relative move of the last step.
+        let (mut stale, mut last_move) = (false, f64::INFINITY);
+        let mut left_out: Vec<usize> = Vec::new();
         loop {
             self.jacobian(kernels, x, r, jn, inv, xs, jl);
             if nudges < MAX_NUDGES && self.nudge_singular(x, r, inv, cfg.tolerance, nudges) {
@@ -663,7 +688,20 @@ impl Component {
                 break;
             };
             gram.assemble(jn);
-            factored = gram.factor(0.0, cfg.rank_tolerance);
+            // Not where rows were dropped: a mesh's kept rows include nearly dependent ones,
+            // whose rounding leaves the refinement short of `REFINED`.
+            if cfg.reuse_factor
+                && damping.is_none()
+                && factored
+                && left_out.is_empty()
+                && last_move <= REUSE_MOVE
+            {
+                stale = true;
+            } else {
+                factored = gram.factor(0.0, cfg.rank_tolerance);
+                stale = false;
+                left_out = gram.dropped();
+            }
             if iterations == 0 && cfg.nearest && factored {
                 fold = cfg.fold_slide && m - gram.dropped().len() < ncols;
             }
@@ -696,7 +734,19 @@ impl Component {
             // The step of least (weighted) movement from `x`, or, with `project`, from the
             // drawing: `dz + Jnᵀ y` with `G y = -rn - Jn dz`, the point nearest `dz` on
             // `Jn d = -rn`.
-            let step = |gram: &mut Gram, y: &mut [f64], dx: &mut [f64], project: bool| {
+            //
+            // With `refine` (work vectors `b`, `res`, `v`), `gram` holds the factorisation of an
+            // earlier `G`: `G y = b` is solved by iterative refinement, `y += G_old⁻¹ (b - G y)`
+            // with `G y = Jn (Jnᵀ y)`, which converges fast while `Jn` has barely changed.
+            // Rows that factorisation dropped would stay out, as a fresh one leaves them (their
+            // `y` zero, their equations not solved). Returns false if it did not reach
+            // `REFINED` within `REFINE_SWEEPS`.
+            let step = |gram: &mut Gram,
+                        y: &mut [f64],
+                        dx: &mut [f64],
+                        project: bool,
+                        refine: Option<(&mut [f64], &mut [f64], &mut [f64], &[usize])>|
+             -> bool {
                 for i in 0..m {
                     y[i] = -r[i] * inv[i];
                 }
@@ -707,7 +757,49 @@ impl Component {
                         }
                     }
                 }
-                gram.solve(y);
+                let mut ok = true;
+                if let Some((b, res, v, left_out)) = refine {
+                    for &d in left_out {
+                        y[d] = 0.0;
+                    }
+                    b.copy_from_slice(y);
+                    let target = REFINED * b.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                    gram.solve(y);
+                    ok = false;
+                    let mut last = f64::INFINITY;
+                    for _ in 0..REFINE_SWEEPS {
+                        res.copy_from_slice(b);
+                        for (c, col) in self.columns.iter().enumerate() {
+                            let mut acc = 0.0;
+                            for &(row, idx) in col {
+                                acc += jn[idx as usize] * y[row as usize];
+                            }
+                            v[c] = acc;
+                        }
+                        for (c, col) in self.columns.iter().enumerate() {
+                            for &(row, idx) in col {
+                                res[row as usize] -= jn[idx as usize] * v[c];
+                            }
+                        }
+                        for &d in left_out {
+                            res[d] = 0.0;
+                        }
+                        let size = res.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                        if size <= target {
+                            ok = true;
+                            break;
+                        }
+                        // Not converging fast: a fresh factorisation is cheaper.
+                        if !(size < 0.1 * last) {
+                            break;
+                        }
+                        last = size;
+                        gram.solve(res);
+                        y.iter_mut().zip(res.iter()).for_each(|(a, d)| *a += d);
+                    }
+                } else {
+                    gram.solve(y);
+                }
                 for (c, col) in self.columns.iter().enumerate() {
                     let mut acc = if project { dz[c] } else { 0.0 };
                     for &(row, idx) in col {
@@ -715,7 +807,25 @@ impl Component {
                     }
                     dx[c] = acc * self.scale[c];
                 }
+                ok
             };
+            // A step with the factorisation as it is, or with a fresh one if the earlier one
+            // no longer serves.
+            macro_rules! fresh_step {
+                ($project:expr) => {{
+                    let refine =
+                        stale.then_some((&mut b[..], &mut res[..], &mut v[..], &left_out[..]));
+                    if !step(gram, y, dx, $project, refine) {
+                        factored = gram.factor(0.0, cfg.rank_tolerance);
+                        stale = false;
+                        left_out = gram.dropped();
+                        if !factored {
+                            break;
+                        }
+                        step(gram, y, dx, $project, None);
+                    }
+                }};
+            }
             // The normalised residual, the quantity the step minimises.
             let m0 = merit(r, inv);
             // The whole step from the factorisation `gram` holds lands at `xt` (residuals in
@@ -726,7 +836,7 @@ impl Component {
                                     xt: &mut [f64],
                                     rt: &mut [f64],
                                     xs: &mut [f64]| {
-                step(gram, y, dx, false);
+                step(gram, y, dx, false, None);
                 for c in 0..ncols {
                     xt[c] = x[c] + dx[c];
                 }
@@ -766,7 +876,7 @@ impl Component {
                 // From a solution, a whole projection step, as the equations are off by no
                 // more than rounding; the steps after it restore them. The search starts
                 // afresh from where it lands.
-                step(gram, y, dx, true);
+                fresh_step!(true);
                 for c in 0..ncols {
                     xt[c] = x[c] + dx[c];
                 }
@@ -783,7 +893,7 @@ impl Component {
                 // whole window are wandering (an impossible triangle climbed from 323 to 690
                 // and crawled there with steps of 1e-8 for 40 iterations): damped steps take
                 // over, which descend monotonically.
-                step(gram, y, dx, sliding);
+                fresh_step!(sliding);
                 for _ in 0..30 {
                     for c in 0..ncols {
                         xt[c] = x[c] + alpha * dx[c];
@@ -855,12 +965,14 @@ impl Component {
             }
             alpha_prev = alpha;
             x.copy_from_slice(xt);
-            settled = sliding
-                && alpha == 1.0
-                && dx
-                    .iter()
+            last_move = if alpha == 1.0 {
+                dx.iter()
                     .zip(x.iter())
-                    .all(|(d, v)| d.abs() <= PROJECTED * (1.0 + v.abs()));
+                    .fold(0.0f64, |a, (d, v)| a.max(d.abs() / (1.0 + v.abs())))
+            } else {
+                f64::INFINITY
+            };
+            settled = sliding && last_move <= PROJECTED;
             // A full Newton step that lands within tolerance and moved the unknowns by next to
             // nothing ends the solve without another Jacobian: the rank and the dependencies
             // are read from the factorisation this step was taken with, at a point closer than
@@ -877,6 +989,12 @@ impl Component {
                 r.copy_from_slice(rt);
                 converged = true;
                 break;
+            }
+        }
+        if stale {
+            // The rank is read from `G` where the solve stopped, factorised afresh.
+            if let Some(gram) = gram_slot.as_mut() {
+                factored = gram.factor(0.0, cfg.rank_tolerance);
             }
         }
         if !converged && held {

@@ -1,5 +1,6 @@
 //! The slide to the solution nearest the drawing, folded into Newton's steps, against the
 //! same slide run after Newton has reached a solution: both must end at the same solution.
+//! Likewise steps solved with an earlier factorisation, refined, against fresh ones.
 
 use super::{solve, Config, Outcome, Report};
 use crate::model::{Constraint, ConstraintKind as K, Entity, Param, System};
@@ -204,4 +205,40 @@ fn a_fully_constrained_solve_takes_the_same_steps_with_or_without_the_slide() {
     assert!(a.iterations > 0, "{a:?}");
     assert_eq!(a.iterations, b.iterations);
     assert_eq!(xa, xb);
+}
+
+/// Solves `start` with steps after small ones solved with the factorisation before (the
+/// default) and with a fresh factorisation every step: the same solution, DOF and iterations.
+fn check_reuse_same(start: &System) {
+    let fresh_cfg = Config {
+        reuse_factor: false,
+        ..Config::default()
+    };
+    let (reused, xr) = run(start, &Config::default());
+    let (fresh, xf) = run(start, &fresh_cfg);
+    for r in [&reused, &fresh] {
+        assert!(r.outcome.is_ok() && r.residual <= 1e-10, "{r:?}");
+    }
+    assert_eq!(reused.dof, fresh.dof);
+    assert_eq!(reused.iterations, fresh.iterations);
+    let scale = xf.iter().fold(1.0f64, |a, v| a.max(v.abs()));
+    let largest = xr
+        .iter()
+        .zip(&xf)
+        .fold(0.0f64, |a, (p, q)| a.max((p - q).abs()));
+    assert!(
+        largest <= 1e-9 * scale,
+        "reused and fresh differ by {largest}"
+    );
+}
+
+#[test]
+fn reused_and_fresh_factorisations_reach_the_same_truss_solution() {
+    check_reuse_same(&truss(12));
+    check_reuse_same(&truss(30));
+}
+
+#[test]
+fn reused_and_fresh_factorisations_reach_the_same_chain_solution_in_space() {
+    check_reuse_same(&chain_3d(60));
 }
