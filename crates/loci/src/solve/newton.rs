@@ -673,8 +673,9 @@ impl Component {
         // plain: damped steps do not project, and a solve that needed them slides afterwards
         // (`project`).
         let mut fold = false;
-        // The last step was a whole projection step smaller than `PROJECTED`: the solution
-        // nearest the drawing once the equations hold.
+        // The last step was a whole projection step smaller than `PROJECTED` (or than
+        // `SLIDE_NOISE` and no longer shrinking): the solution nearest the drawing once the
+        // equations hold.
         let mut settled = false;
         // Whether `keep` holds a solution.
         let mut held = false;
