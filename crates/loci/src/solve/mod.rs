@@ -20,6 +20,8 @@ mod order;
 mod plan;
 pub(crate) mod rank;
 mod report;
+#[cfg(test)]
+mod slide_tests;
 mod substitute;
 
 pub use config::Config;

@@ -70,6 +70,17 @@ pub(crate) struct Scratch {
     jl: Vec<f64>,
     /// The starting point, for [`Component::project`].
     x0: Vec<f64>,
+    /// The first solution a sliding solve reached, and its residuals: the answer if the slide
+    /// towards the nearest one fails.
+    keep: Vec<f64>,
+    r_keep: Vec<f64>,
+    /// The movement towards the starting point, in scaled unknowns.
+    dz: Vec<f64>,
+    /// A step's right-hand side, the residual of its refinement, and `Jnᵀ y`: for steps
+    /// solved with the factorisation of an earlier iteration.
+    b: Vec<f64>,
+    res: Vec<f64>,
+    v: Vec<f64>,
 }
 
 /// How many past merits the line search compares a step with.
@@ -106,6 +117,10 @@ const MAX_RESTORE: usize = 5;
 /// shows, and the rounds it would take to go further cost as much as Newton iterations.
 const PROJECTED: f64 = 1e-9;
 
+/// Projection steps below this (relative to the unknown) that no longer shrink are rounding:
+/// the answer is then within a few times this of the nearest solution.
+const SLIDE_NOISE: f64 = 1e-7;
+
 /// How many times one solve may move the unknowns of an equation that has no gradient where
 /// it does not hold (see [`Component::nudge_singular`]).
 const MAX_NUDGES: usize = 3;
@@ -113,6 +128,15 @@ const MAX_NUDGES: usize = 3;
 /// Thresholds (on pivots of rows of unit length) below which a truncated step treats rows as
 /// dependent, tried in turn once damped steps are in use.
 const TRUNCATIONS: [f64; 4] = [0.0, 1e-8, 1e-6, 1e-4];
+
+/// A step that moved no unknown by more than this (relative to it) leaves `G` close enough
+/// for the next step to be solved with the factorisation it was taken with, refined.
+const REUSE_MOVE: f64 = 1e-4;
+
+/// Refinement of such a step ends when the residual of `G y = b` is this small relative to
+/// `b`, or gives up after `REFINE_SWEEPS` (or a sweep that does not gain a factor of 10).
+const REFINED: f64 = 1e-13;
+const REFINE_SWEEPS: usize = 4;
 
 /// The size of such a move, relative to the equation's residual.
 const NUDGE: f64 = 1e-3;
@@ -573,6 +597,12 @@ impl Component {
             xs,
             jl,
             x0,
+            keep,
+            r_keep,
+            dz,
+            b,
+            res,
+            v,
         } = scratch;
         if cfg.nearest {
             x0.clear();
@@ -588,6 +618,12 @@ impl Component {
             (&mut *dx, ncols),
             (&mut *xt, ncols),
             (&mut *rt, m),
+            (&mut *keep, ncols),
+            (&mut *r_keep, m),
+            (&mut *dz, ncols),
+            (&mut *b, m),
+            (&mut *res, m),
+            (&mut *v, ncols),
         ] {
             if v.len() != n {
                 v.clear();
@@ -596,7 +632,7 @@ impl Component {
         }
         self.gather_all(kernels, x, values, xs);
         let xs = &mut xs[..];
-        let (r, jn, inv, y, dx, xt, rt) = (
+        let (r, jn, inv, y, dx, xt, rt, keep, r_keep, dz) = (
             &mut r[..],
             &mut jn[..],
             &mut inv[..],
@@ -604,7 +640,12 @@ impl Component {
             &mut dx[..],
             &mut xt[..],
             &mut rt[..],
+            &mut keep[..],
+            &mut r_keep[..],
+            &mut dz[..],
         );
+        let x0 = &x0[..];
+        let (b, res, v) = (&mut b[..], &mut res[..], &mut v[..]);
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;
@@ -624,6 +665,26 @@ impl Component {
         // Iterations since the merit last reached a new low.
         let (mut best, mut since_best) = (f64::INFINITY, 0usize);
         let mut nudges = 0;
+        // Sliding: Newton's steps are themselves the projections of the drawing onto the
+        // equations linearised where they stand, so that they end at the solution nearest the
+        // drawing rather than reach one and then slide along the solutions (half the
+        // iterations on a truss). Only for an under-constrained component (a square one has one
+        // step, which the projection would only round differently), and only while steps are
+        // plain: damped steps do not project, and a solve that needed them slides afterwards
+        // (`project`).
+        let mut fold = false;
+        // The last step was a whole projection step smaller than `PROJECTED` (or than
+        // `SLIDE_NOISE` and no longer shrinking): the solution nearest the drawing once the
+        // equations hold.
+        let mut settled = false;
+        // Whether `keep` holds a solution.
+        let mut held = false;
+        // Whether the factorisation is of an earlier iteration's `G` (see `REUSE_MOVE`); the
+        // rows the last fresh one dropped; the largest relative move of the last step.
+        let (mut stale, mut last_move) = (false, f64::INFINITY);
+        // Whether to try that: not again once a refinement has failed in this solve.
+        let mut reuse = cfg.reuse_factor;
+        let mut left_out: Vec<usize> = Vec::new();
         loop {
             self.jacobian(kernels, x, r, jn, inv, xs, jl);
             if nudges < MAX_NUDGES && self.nudge_singular(x, r, inv, cfg.tolerance, nudges) {
@@ -634,29 +695,145 @@ impl Component {
                 break;
             };
             gram.assemble(jn);
-            factored = gram.factor(0.0, cfg.rank_tolerance);
+            // Not where rows were dropped: a mesh's kept rows include nearly dependent ones,
+            // whose rounding leaves the refinement short of `REFINED`.
+            if reuse
+                && damping.is_none()
+                && factored
+                && left_out.is_empty()
+                && last_move <= REUSE_MOVE
+            {
+                stale = true;
+            } else {
+                factored = gram.factor(0.0, cfg.rank_tolerance);
+                stale = false;
+                left_out = gram.dropped();
+            }
+            if iterations == 0 && cfg.nearest && factored {
+                fold = cfg.fold_slide && m - gram.dropped().len() < ncols;
+            }
+            // The slide converges linearly where the equations curve much over the distance
+            // to the drawing: it gets as many steps as the separate slide would.
+            let sliding = fold && damping.is_none() && iterations < MAX_PROJECTION + MAX_RESTORE;
             let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-            if max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite()) {
+            let holds = max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite());
+            // A start that already holds is its own nearest solution.
+            if holds && (!sliding || settled || iterations == 0 || iterations >= cfg.max_iterations)
+            {
                 converged = true;
                 break;
             }
             if !factored || iterations >= cfg.max_iterations {
                 break;
             }
+            if holds {
+                // A solution, not yet the nearest: kept in case the slide goes wrong.
+                keep.copy_from_slice(x);
+                r_keep.copy_from_slice(r);
+                held = true;
+            }
             iterations += 1;
-            let step = |gram: &mut Gram, y: &mut [f64], dx: &mut [f64]| {
+            if sliding {
+                for c in 0..ncols {
+                    dz[c] = (x0[c] - x[c]) / self.scale[c];
+                }
+            }
+            // The step of least (weighted) movement from `x`, or, with `project`, from the
+            // drawing: `dz + Jnᵀ y` with `G y = -rn - Jn dz`, the point nearest `dz` on
+            // `Jn d = -rn`.
+            //
+            // With `refine` (work vectors `b`, `res`, `v`), `gram` holds the factorisation of an
+            // earlier `G`: `G y = b` is solved by iterative refinement, `y += G_old⁻¹ (b - G y)`
+            // with `G y = Jn (Jnᵀ y)`, which converges fast while `Jn` has barely changed.
+            // Rows that factorisation dropped would stay out, as a fresh one leaves them (their
+            // `y` zero, their equations not solved). Returns false if it did not reach
+            // `REFINED` within `REFINE_SWEEPS`.
+            let step = |gram: &mut Gram,
+                        y: &mut [f64],
+                        dx: &mut [f64],
+                        project: bool,
+                        refine: Option<(&mut [f64], &mut [f64], &mut [f64], &[usize])>|
+             -> bool {
                 for i in 0..m {
                     y[i] = -r[i] * inv[i];
                 }
-                gram.solve(y);
+                if project {
+                    for (c, col) in self.columns.iter().enumerate() {
+                        for &(row, idx) in col {
+                            y[row as usize] -= jn[idx as usize] * dz[c];
+                        }
+                    }
+                }
+                let mut ok = true;
+                if let Some((b, res, v, left_out)) = refine {
+                    for &d in left_out {
+                        y[d] = 0.0;
+                    }
+                    b.copy_from_slice(y);
+                    let target = REFINED * b.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                    gram.solve(y);
+                    ok = false;
+                    let mut last = f64::INFINITY;
+                    for _ in 0..REFINE_SWEEPS {
+                        res.copy_from_slice(b);
+                        for (c, col) in self.columns.iter().enumerate() {
+                            let mut acc = 0.0;
+                            for &(row, idx) in col {
+                                acc += jn[idx as usize] * y[row as usize];
+                            }
+                            v[c] = acc;
+                        }
+                        for (c, col) in self.columns.iter().enumerate() {
+                            for &(row, idx) in col {
+                                res[row as usize] -= jn[idx as usize] * v[c];
+                            }
+                        }
+                        for &d in left_out {
+                            res[d] = 0.0;
+                        }
+                        let size = res.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                        if size <= target {
+                            ok = true;
+                            break;
+                        }
+                        // Not converging fast: a fresh factorisation is cheaper.
+                        if !(size < 0.1 * last) {
+                            break;
+                        }
+                        last = size;
+                        gram.solve(res);
+                        y.iter_mut().zip(res.iter()).for_each(|(a, d)| *a += d);
+                    }
+                } else {
+                    gram.solve(y);
+                }
                 for (c, col) in self.columns.iter().enumerate() {
-                    let mut acc = 0.0;
+                    let mut acc = if project { dz[c] } else { 0.0 };
                     for &(row, idx) in col {
                         acc += jn[idx as usize] * y[row as usize];
                     }
                     dx[c] = acc * self.scale[c];
                 }
+                ok
             };
+            // A step with the factorisation as it is, or with a fresh one if the earlier one
+            // no longer serves.
+            macro_rules! fresh_step {
+                ($project:expr) => {{
+                    let refine =
+                        stale.then_some((&mut b[..], &mut res[..], &mut v[..], &left_out[..]));
+                    if !step(gram, y, dx, $project, refine) {
+                        reuse = false;
+                        factored = gram.factor(0.0, cfg.rank_tolerance);
+                        stale = false;
+                        left_out = gram.dropped();
+                        if !factored {
+                            break;
+                        }
+                        step(gram, y, dx, $project, None);
+                    }
+                }};
+            }
             // The normalised residual, the quantity the step minimises.
             let m0 = merit(r, inv);
             // The whole step from the factorisation `gram` holds lands at `xt` (residuals in
@@ -667,7 +844,7 @@ impl Component {
                                     xt: &mut [f64],
                                     rt: &mut [f64],
                                     xs: &mut [f64]| {
-                step(gram, y, dx);
+                step(gram, y, dx, false, None);
                 for c in 0..ncols {
                     xt[c] = x[c] + dx[c];
                 }
@@ -703,12 +880,28 @@ impl Component {
                 // lengths become dependent, is only reached by crawling.
                 break;
             }
-            // Non-monotone steps that find no new low for a whole window are wandering (an
-            // impossible triangle climbed from 323 to 690 and crawled there with steps of 1e-8
-            // for 40 iterations): switch to damped steps, which descend monotonically.
-            if damping.is_none() && since_best < NONMONOTONE {
-                // Newton step with backtracking.
-                step(gram, y, dx);
+            if sliding && holds {
+                // From a solution, a whole projection step, as the equations are off by no
+                // more than rounding; the steps after it restore them. The search starts
+                // afresh from where it lands.
+                fresh_step!(true);
+                for c in 0..ncols {
+                    xt[c] = x[c] + dx[c];
+                }
+                self.residuals(kernels, xt, rt, xs);
+                accepted = rt.iter().all(|v| v.is_finite());
+                alpha = 1.0;
+                history.clear();
+                (best, since_best) = (f64::INFINITY, 0);
+                if !accepted {
+                    break;
+                }
+            } else if damping.is_none() && since_best < NONMONOTONE {
+                // Newton step with backtracking. Non-monotone steps that find no new low for a
+                // whole window are wandering (an impossible triangle climbed from 323 to 690
+                // and crawled there with steps of 1e-8 for 40 iterations): damped steps take
+                // over, which descend monotonically.
+                fresh_step!(sliding);
                 for _ in 0..30 {
                     for c in 0..ncols {
                         xt[c] = x[c] + alpha * dx[c];
@@ -720,6 +913,12 @@ impl Component {
                         break;
                     }
                     alpha *= 0.5;
+                }
+                if sliding && (!accepted || alpha < 1.0) {
+                    // The pull towards the drawing costs more than it gains here (a solution
+                    // far from it, across much curvature): plain steps from now on, and the
+                    // slide once they have reached a solution.
+                    fold = false;
                 }
             }
             if !accepted && damping.is_some() && factored {
@@ -733,7 +932,15 @@ impl Component {
                 // redundant rows follow them.
                 for trunc in TRUNCATIONS {
                     let tol = cfg.rank_tolerance.max(trunc);
-                    if gram.factor(0.0, tol) && full_step_lowers(gram, y, dx, xt, rt, xs) {
+                    // The factorisation at the rank tolerance is the one this iteration began
+                    // with: no other has been made since (plain steps are not tried once
+                    // damping is in use).
+                    let ready = if tol == cfg.rank_tolerance {
+                        factored
+                    } else {
+                        gram.factor(0.0, tol)
+                    };
+                    if ready && full_step_lowers(gram, y, dx, xt, rt, xs) {
                         accepted = true;
                         alpha = 1.0;
                         break;
@@ -766,12 +973,28 @@ impl Component {
             }
             alpha_prev = alpha;
             x.copy_from_slice(xt);
+            let before = last_move;
+            last_move = if alpha == 1.0 {
+                dx.iter()
+                    .zip(x.iter())
+                    .fold(0.0f64, |a, (d, v)| a.max(d.abs() / (1.0 + v.abs())))
+            } else {
+                f64::INFINITY
+            };
+            // Settled once the projection's steps are below `PROJECTED`, or below
+            // `SLIDE_NOISE` and no longer shrinking: rounding in a long chain's projection
+            // keeps its steps at a few 1e-9 (a 10,000-segment chain took 27 iterations to
+            // happen on one below 1e-9, where 5 reach the nearest solution).
+            settled = sliding
+                && (last_move <= PROJECTED
+                    || (last_move <= SLIDE_NOISE && last_move >= 0.5 * before));
             // A full Newton step that lands within tolerance and moved the unknowns by next to
             // nothing ends the solve without another Jacobian: the rank and the dependencies
             // are read from the factorisation this step was taken with, at a point closer than
             // rounding would tell apart.
             if damping.is_none()
                 && alpha == 1.0
+                && (settled || !sliding)
                 && rt.iter().all(|v| v.abs() <= cfg.tolerance)
                 && dx
                     .iter()
@@ -783,8 +1006,26 @@ impl Component {
                 break;
             }
         }
-        // A start that already holds is its own nearest solution.
-        if converged && cfg.nearest && factored && iterations > 0 {
+        if stale {
+            // The rank is read from `G` where the solve stopped, factorised afresh.
+            if let Some(gram) = gram_slot.as_mut() {
+                factored = gram.factor(0.0, cfg.rank_tolerance);
+            }
+        }
+        if !converged && held {
+            // The slide from a solution failed: that solution is the answer.
+            x.copy_from_slice(keep);
+            self.jacobian(kernels, x, r, jn, inv, xs, jl);
+            if let Some(gram) = gram_slot.as_mut() {
+                gram.assemble(jn);
+                factored = gram.factor(0.0, cfg.rank_tolerance);
+            }
+            r.copy_from_slice(r_keep);
+            converged = true;
+        }
+        // A start that already holds is its own nearest solution; a solve whose steps slid
+        // is at the nearest one (or as near as the slide's rounds took it).
+        if converged && cfg.nearest && factored && iterations > 0 && !(fold && damping.is_none()) {
             if let Some(gram) = gram_slot.as_mut() {
                 if m - gram.dropped().len() < ncols {
                     let mut work = Work {
