@@ -6,6 +6,7 @@
 //! vertical), [`lines`] (distances to lines, lengths, angles), [`circles`] (radii, arcs,
 //! tangency to arcs), [`curves`] (cubics), [`orientation`] (normals).
 
+mod carried;
 mod circles;
 mod compile;
 mod curves;
@@ -18,6 +19,7 @@ mod planar;
 mod points;
 pub(crate) mod refs;
 
+pub(crate) use carried::Carried;
 pub(crate) use compile::{compile_group, compile_unmerged, compile_unmerged_only, Kernel, Link};
 pub(crate) use duplicates::{duplicate_groups, still_duplicates};
 use refs::{Ent, Frame, Geo, PointRef};

@@ -26,7 +26,7 @@ pub use config::Config;
 pub(crate) use gram::MAX_PRODUCTS;
 pub use report::{Outcome, Report};
 
-use crate::equations::{compile_group, still_duplicates, Link, Owner};
+use crate::equations::{compile_group, still_duplicates, Carried, Link, Owner};
 use crate::error::SolveError;
 use crate::model::{ConstraintId, GroupId, ParamId, System};
 use crate::par;
@@ -97,6 +97,8 @@ struct Cache {
     kernels: Vec<crate::equations::Kernel>,
     /// Constraints left out as copies of others: `(copy, first)`.
     duplicates: Vec<(ConstraintId, ConstraintId)>,
+    /// Entities read as expressions of their carriers, written back after the solve.
+    carried: Carried,
     /// Merged and fixed parameters, columns and components.
     plan: Option<Plan>,
     components: Vec<Component>,
@@ -214,6 +216,7 @@ fn solve_values(
         cache.kernels = compiled.kernels;
         cache.links = compiled.links;
         cache.duplicates = compiled.duplicates;
+        cache.carried = compiled.carried;
         cache.key = Some(key);
     } else {
         refresh(sys, &values, cache);
@@ -234,6 +237,7 @@ fn solve_values(
                 dragged,
                 &cache.kernels,
                 &cache.links,
+                &cache.carried,
                 &values,
                 tol,
             )?;
@@ -432,6 +436,8 @@ fn solve_values(
             };
         }
     }
+    // Carried entities follow what carries them, wherever the solve stopped.
+    cache.carried.write_back(sys, &mut out);
     Ok((report, out))
 }
 
