@@ -13,10 +13,11 @@
 //!
 //! An entity stays as it was (its own unknowns, its implicit equation) when anything else
 //! reads its parameters, when a workplane is built on it (a workplane reads plain
-//! coordinates), or when what carries it is not a plain normal or 3D point.
+//! coordinates), when what carries it is not a plain normal or 3D point, or when one of its
+//! parameters is dragged (the solve moves that parameter least, so it must be an unknown).
 
 use super::refs::{Ent, Locals, Resolver};
-use crate::model::{EntityKind, GroupId, System};
+use crate::model::{EntityKind, GroupId, ParamId, System};
 use std::cell::Cell;
 
 thread_local! {
@@ -50,8 +51,9 @@ pub(crate) struct Carried {
 }
 
 impl Carried {
-    /// The carried entities of `group` in `sys` (none when expressions are switched off).
-    pub fn of(sys: &System, group: GroupId) -> Self {
+    /// The carried entities of `group` in `sys` when `dragged` parameters move least (none
+    /// when expressions are switched off).
+    pub fn of(sys: &System, group: GroupId, dragged: &[ParamId]) -> Self {
         if !ENABLED.with(Cell::get) {
             return Self::default();
         }
@@ -60,6 +62,12 @@ impl Carried {
         // How many entities hold or read each parameter: an own parameter read by anything
         // else must stay an unknown.
         let mut uses = vec![0u8; params.len()];
+        // A dragged parameter counts as a use of its own.
+        for p in dragged {
+            if let Some(i) = sys.param_index(*p) {
+                uses[i] = uses[i].saturating_add(1);
+            }
+        }
         let mut on_plane = vec![false; entities.len()];
         for e in entities {
             for p in e.kind.params().iter().chain(e.kind.read_params()) {
@@ -139,20 +147,9 @@ impl Carried {
     }
 
     /// The positions of the carried entities, in model order.
+    #[cfg(test)]
     pub fn entities(&self) -> &[usize] {
         &self.list
-    }
-
-    /// The parameters the expression of each carried entity reads (positions in
-    /// [`System::params`]), by entity position.
-    pub fn read_by(&self, sys: &System, index: usize) -> Vec<u32> {
-        let r = Resolver::carrying(sys, self);
-        let e = &sys.entities()[index];
-        let mut l = Locals::default();
-        match r.entity(crate::model::ObjectId::Entity(e.h), e.h, &mut l) {
-            Ok(_) => l.params.to_vec(),
-            Err(_) => Vec::new(),
-        }
     }
 
     /// Writes the own parameters of every carried entity from the values of what carries it

@@ -5,7 +5,8 @@ use super::refs::{Ent, Frame, Locals, PointRef, Resolver};
 use super::{EqKind, Equation, Owner};
 use crate::error::ModelError;
 use crate::model::{
-    Constraint, ConstraintId, ConstraintKind, EntityKind, GroupId, ObjectId, PlaneRule, System,
+    Constraint, ConstraintId, ConstraintKind, EntityKind, GroupId, ObjectId, ParamId, PlaneRule,
+    System,
 };
 
 /// An equation between parameters, removed from the solve by substitution.
@@ -48,13 +49,21 @@ impl Kernel {
 }
 
 /// Compiles every constraint of `group` and the implicit equations of its entities, reading
-/// `values` (one per parameter, in [`System::params`] order) to pick branches.
+/// `values` (one per parameter, in [`System::params`] order) to pick branches. With
+/// `express`, carried entities are read as expressions (see [`Carried`]); `dragged`
+/// parameters stay unknowns.
 pub(crate) fn compile_group(
     sys: &System,
     group: GroupId,
+    dragged: &[ParamId],
+    express: bool,
     values: &[f64],
 ) -> Result<Compiled, ModelError> {
-    let carried = Carried::of(sys, group);
+    let carried = if express {
+        Carried::of(sys, group, dragged)
+    } else {
+        Carried::default()
+    };
     let r = Resolver::carrying(sys, &carried);
     let mut mine: Vec<&Constraint> = sys
         .constraints()
@@ -266,7 +275,7 @@ pub(crate) fn compile_unmerged_only(
         // These equations read carried entities by their own parameters: a carried entity's
         // implicit equation, which the solve never saw and so never named, comes with the
         // constraints that read it, or they would seem free of each other.
-        let carried = Carried::of(sys, group);
+        let carried = Carried::of(sys, group, &[]);
         let mut read = vec![
             false;
             if carried.is_empty() {

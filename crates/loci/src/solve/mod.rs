@@ -70,7 +70,9 @@ pub(crate) fn solve_core(
     cfg.check()?;
     sys.validate()?;
     check_group(sys, group)?;
-    solve_values(sys, group, dragged, cfg, &mut Cache::default())
+    let mut cache = Cache::default();
+    let (report, values, _) = solve_values_checked(sys, group, dragged, cfg, &mut cache)?;
+    Ok((report, values))
 }
 
 /// A solve of a group that nothing belongs to is a mistake (a wrong number, an empty file),
@@ -99,6 +101,8 @@ struct Cache {
     duplicates: Vec<(ConstraintId, ConstraintId)>,
     /// Entities read as expressions of their carriers, written back after the solve.
     carried: Carried,
+    /// Every carried entity kept as its own unknowns with its implicit equation.
+    plain: bool,
     /// Merged and fixed parameters, columns and components.
     plan: Option<Plan>,
     components: Vec<Component>,
@@ -165,7 +169,8 @@ fn solve_cached(
     cfg: &Config,
     cache: &mut Cache,
 ) -> Result<Report, SolveError> {
-    let (mut report, values) = solve_values(sys, group, dragged, cfg, cache)?;
+    let (mut report, values, plain) = solve_values_checked(sys, group, dragged, cfg, cache)?;
+    let used = plain.as_ref().unwrap_or(cache);
     if matches!(
         report.outcome,
         Outcome::Inconsistent | Outcome::DidNotConverge
@@ -182,8 +187,8 @@ fn solve_cached(
             &values,
             cfg,
             &mut report,
-            &cache.kernels,
-            &cache.links,
+            &used.kernels,
+            &used.links,
         );
     }
     // Values are written back only when every constraint holds, as libslvs does: a failed
@@ -192,6 +197,35 @@ fn solve_cached(
         sys.write_group_values(group, &values);
     }
     Ok(report)
+}
+
+/// [`solve_values`], and when it fails with carried entities read as expressions, the solve
+/// again with each of them its own unknowns and implicit equation (the cache of that solve
+/// returned too). An impossible system has no solution for the two to agree on: Newton
+/// stops at the least-squares point of different equations, and a point carried off its
+/// part is what lets the dependent rows of the conflict show; the verdict and the names are
+/// then those a solve without expressions gives. Only failures pay for it.
+fn solve_values_checked(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    cache: &mut Cache,
+) -> Result<(Report, Vec<f64>, Option<Cache>), SolveError> {
+    let (report, values) = solve_values(sys, group, dragged, cfg, cache)?;
+    let failed = matches!(
+        report.outcome,
+        Outcome::Inconsistent | Outcome::DidNotConverge
+    );
+    if !failed || cache.carried.is_empty() {
+        return Ok((report, values, None));
+    }
+    let mut plain = Cache {
+        plain: true,
+        ..Cache::default()
+    };
+    let (report, values) = solve_values(sys, group, dragged, cfg, &mut plain)?;
+    Ok((report, values, Some(plain)))
 }
 
 /// The solve itself: the report and the value of every parameter where it stopped.
@@ -211,8 +245,11 @@ fn solve_values(
         cache.key = None;
     }
     if cache.key != Some(key) {
-        *cache = Cache::default();
-        let compiled = compile_group(sys, group, &values)?;
+        *cache = Cache {
+            plain: cache.plain,
+            ..Cache::default()
+        };
+        let compiled = compile_group(sys, group, dragged, !cache.plain, &values)?;
         cache.kernels = compiled.kernels;
         cache.links = compiled.links;
         cache.duplicates = compiled.duplicates;

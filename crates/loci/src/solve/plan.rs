@@ -95,23 +95,6 @@ impl Plan {
             let i = sys.param_index(*h).ok_or(SolveError::UnknownDragged(h.0))?;
             is_dragged[i] = true;
         }
-        // Dragging a carried entity drags what carries it: those parameters move least.
-        if dragged
-            .iter()
-            .any(|h| sys.param_index(*h).is_some_and(|i| carried.param(i)))
-        {
-            for &e in carried.entities() {
-                let own = sys.entities()[e].kind.params();
-                let held = own
-                    .iter()
-                    .any(|h| sys.param_index(*h).is_some_and(|i| is_dragged[i]));
-                if held {
-                    for p in carried.read_by(sys, e) {
-                        is_dragged[p as usize] = true;
-                    }
-                }
-            }
-        }
         let mut sub = substitute(links, &unknown, values, tol);
         let mut root_of = vec![usize::MAX; np];
         let mut fixed = vec![false; np];

@@ -533,8 +533,9 @@ pub(super) fn compile_implicit(sys: &System, h: u32) -> One {
     let values: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     // The condition itself, as a solve that keeps the entity's own unknowns has it (a solve
     // reads a carried entity as its expression instead, with no condition).
-    let compiled = super::super::carried::without(|| compile_group(sys, e.group, &values))
-        .expect("group compiles");
+    let compiled =
+        super::super::carried::without(|| compile_group(sys, e.group, &[], true, &values))
+            .expect("group compiles");
     compiled
         .kernels
         .into_iter()
