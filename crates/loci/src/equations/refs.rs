@@ -361,6 +361,12 @@ impl<'a> Resolver<'a> {
                 ..
             } => {
                 let t = self.params(h, translation, l)?;
+                // A point at the part's origin is its translation: it reads no rotation, so
+                // its equations leave the rotation's columns of the Jacobian alone (a
+                // revolute chain's pivots).
+                if *base == [0.0; 3] {
+                    return Ok(Ent::Point(PointRef::P3(t)));
+                }
                 let q = rotation(l, *rot)?;
                 Ent::Point(PointRef::Moved { t, q, base: *base })
             }
@@ -368,10 +374,15 @@ impl<'a> Resolver<'a> {
                 base,
                 rotation: rot,
                 ..
-            } => Ent::Normal(NormalRef::Turned {
-                q: rotation(l, *rot)?,
-                base: *base,
-            }),
+            } => {
+                let q = rotation(l, *rot)?;
+                // Turned by nothing, it is the rotation itself.
+                Ent::Normal(if *base == [1.0, 0.0, 0.0, 0.0] {
+                    NormalRef::Q(q)
+                } else {
+                    NormalRef::Turned { q, base: *base }
+                })
+            }
             EntityKind::PointNTrans {
                 base,
                 translation,
