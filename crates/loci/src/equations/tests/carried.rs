@@ -601,7 +601,7 @@ fn assemblies_solve_as_with_own_unknowns() {
         (
             "a second angle between the same arms conflicts",
             chain(
-                4,
+                3,
                 &[(MateKind::Angle { degrees: 45.0 }, (1, "arm"), (2, "arm"))],
             ),
         ),
