@@ -169,7 +169,10 @@ impl Carried {
             };
             x.clear();
             x.extend(l.params.iter().map(|&p| values[p as usize]));
-            let g = super::refs::Geo { x: &x[..] };
+            let g = super::refs::Geo {
+                x: &x[..],
+                k: &l.consts,
+            };
             let own: Vec<usize> = e
                 .kind
                 .params()

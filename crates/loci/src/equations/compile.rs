@@ -214,6 +214,7 @@ fn compile_entities(
             continue;
         }
         let mut eq = Equation::of_entity(kind, ents, val, target);
+        eq.consts = std::mem::take(&mut l.consts);
         let l = super::planar::compact(&mut eq, &l).unwrap_or(l);
         out.push(kernel(Owner::Entity(e.h), l, eq, values, x));
     }
@@ -320,7 +321,10 @@ pub(super) fn kernel(
     x.extend(l.params.iter().map(|&p| values[p as usize]));
     eq.choose(x);
     if eq.kind == EqKind::Constraint(ConstraintKind::WhereDragged) {
-        let g = super::refs::Geo { x: &x[..] };
+        let g = super::refs::Geo {
+            x: &x[..],
+            k: &eq.consts,
+        };
         let p = g.at(eq.pt(0), eq.wp());
         eq.target = [p.x, p.y, p.z];
     }
@@ -393,7 +397,9 @@ pub(crate) fn resolve_constraint(
             ents.push(r.entity(owner, h, &mut l)?);
         }
     }
-    Ok((Equation::of_constraint(c, wp, pts, ents), l))
+    let mut eq = Equation::of_constraint(c, wp, pts, ents);
+    eq.consts = std::mem::take(&mut l.consts);
+    Ok((eq, l))
 }
 
 fn compile_constraint(

@@ -26,17 +26,19 @@ pub(crate) enum PointRef {
         wp: Frame,
         uv: [Slot; 2],
     },
-    /// A constant point carried by a rigid motion: `t + q base q*`.
+    /// A constant point carried by a rigid motion: `t + q base q*`, its base (x, y, z) the
+    /// equation's constant `base` (kept apart so that every reference stays as small as a
+    /// point of a workplane: sketches hold many).
     Moved {
         t: [Slot; 3],
         q: [Slot; 4],
-        base: [f64; 3],
+        base: Konst,
     },
     /// A point moved by a multiple of a translation: `base + times t`.
     Shifted {
         base: [Slot; 3],
         t: [Slot; 3],
-        times: f64,
+        times: i32,
     },
 }
 
@@ -44,12 +46,16 @@ pub(crate) enum PointRef {
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum NormalRef {
     Q([Slot; 4]),
-    /// `q * base` (see [`super::carried`]).
+    /// `q * base` (see [`super::carried`]), its base (w, x, y, z) the equation's constant
+    /// `base`.
     Turned {
         q: [Slot; 4],
-        base: [f64; 4],
+        base: Konst,
     },
 }
+
+/// Index into an equation's constants (the bases of carried entities).
+pub(crate) type Konst = u16;
 
 /// Any entity, resolved.
 #[derive(Clone, Debug)]
@@ -77,6 +83,8 @@ pub(crate) enum Ent {
 #[derive(Clone, Debug)]
 pub(crate) struct Locals {
     pub params: SmallVec<[u32; 16]>,
+    /// The constants the equation reads (see [`Konst`]), moved into it once built.
+    pub consts: Vec<[f64; 4]>,
     /// The workplane resolved last, already in these locals: the points of one constraint
     /// nearly always share it, and it is seven parameters to look up.
     last_frame: Option<Frame>,
@@ -88,6 +96,7 @@ impl Default for Locals {
     fn default() -> Self {
         Self {
             params: SmallVec::new(),
+            consts: Vec::new(),
             last_frame: None,
         }
     }
@@ -101,6 +110,12 @@ impl Locals {
         }
         self.params.push(p);
         (self.params.len() - 1) as Slot
+    }
+
+    /// The index of constant `v` among the equation's constants.
+    pub fn konst(&mut self, v: [f64; 4]) -> Konst {
+        self.consts.push(v);
+        (self.consts.len() - 1) as Konst
     }
 }
 
@@ -368,7 +383,12 @@ impl<'a> Resolver<'a> {
                     return Ok(Ent::Point(PointRef::P3(t)));
                 }
                 let q = rotation(l, *rot)?;
-                Ent::Point(PointRef::Moved { t, q, base: *base })
+                let [x, y, z] = *base;
+                Ent::Point(PointRef::Moved {
+                    t,
+                    q,
+                    base: l.konst([x, y, z, 0.0]),
+                })
             }
             EntityKind::NormalNRot {
                 base,
@@ -380,7 +400,10 @@ impl<'a> Resolver<'a> {
                 Ent::Normal(if *base == [1.0, 0.0, 0.0, 0.0] {
                     NormalRef::Q(q)
                 } else {
-                    NormalRef::Turned { q, base: *base }
+                    NormalRef::Turned {
+                        q,
+                        base: l.konst(*base),
+                    }
                 })
             }
             EntityKind::PointNTrans {
@@ -396,7 +419,7 @@ impl<'a> Resolver<'a> {
                 Ent::Point(PointRef::Shifted {
                     base: b,
                     t: self.params(h, translation, l)?,
-                    times: f64::from(*times),
+                    times: *times,
                 })
             }
             _ => unreachable!("carried entities are moved points and normals"),
@@ -417,9 +440,10 @@ impl<'a> Resolver<'a> {
     }
 }
 
-/// Geometry read from local slot values.
+/// Geometry read from local slot values and the equation's constants.
 pub(crate) struct Geo<'a, S> {
     pub x: &'a [S],
+    pub k: &'a [[f64; 4]],
 }
 
 impl<S: Scalar> Geo<'_, S> {
@@ -448,12 +472,15 @@ impl<S: Scalar> Geo<'_, S> {
     pub fn normal(&self, n: &NormalRef) -> Quat<S> {
         match n {
             NormalRef::Q(q) => self.quat(*q),
-            NormalRef::Turned { q, base } => self.quat(*q).times(Quat {
-                w: S::cst(base[0]),
-                x: S::cst(base[1]),
-                y: S::cst(base[2]),
-                z: S::cst(base[3]),
-            }),
+            NormalRef::Turned { q, base } => {
+                let b = self.k[*base as usize];
+                self.quat(*q).times(Quat {
+                    w: S::cst(b[0]),
+                    x: S::cst(b[1]),
+                    y: S::cst(b[2]),
+                    z: S::cst(b[3]),
+                })
+            }
         }
     }
 
@@ -465,15 +492,16 @@ impl<S: Scalar> Geo<'_, S> {
             // quaternion's rotated axes, `p.x U + p.y V + p.z N`.
             PointRef::Moved { t, q, base } => {
                 let q = self.quat(*q);
-                let [bx, by, bz] = base.map(S::cst);
+                let b = self.k[*base as usize];
+                let [bx, by, bz] = [b[0], b[1], b[2]].map(S::cst);
                 self.v3(*t)
                     .plus(q.u().scale(bx))
                     .plus(q.v().scale(by))
                     .plus(q.n().scale(bz))
             }
-            PointRef::Shifted { base, t, times } => {
-                self.v3(*base).plus(self.v3(*t).scale(S::cst(*times)))
-            }
+            PointRef::Shifted { base, t, times } => self
+                .v3(*base)
+                .plus(self.v3(*t).scale(S::cst(f64::from(*times)))),
             PointRef::P2 { wp, uv } => {
                 let q = self.quat(wp.q);
                 let (u, v) = (self.p(uv[0]), self.p(uv[1]));

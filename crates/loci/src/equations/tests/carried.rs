@@ -634,3 +634,15 @@ fn assemblies_solve_as_with_own_unknowns() {
         assert!(outcomes.contains(&o), "a case ending {o}: {outcomes:?}");
     }
 }
+
+#[test]
+fn a_carried_point_is_no_larger_than_a_point_of_a_workplane() {
+    use super::super::refs::{Frame, PointRef, Slot};
+    // Sketches hold many references: the bases of carried entities live in the equation.
+    let p2 = std::mem::size_of::<(Frame, [Slot; 2])>();
+    assert!(
+        std::mem::size_of::<PointRef>() <= p2 + 4,
+        "{} against {p2}",
+        std::mem::size_of::<PointRef>()
+    );
+}

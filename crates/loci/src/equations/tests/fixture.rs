@@ -518,7 +518,11 @@ pub(super) fn compile(sys: &System, c: &Constraint) -> One {
     let x = one.x(sys);
     one.eq.choose(&x);
     if one.eq.kind == EqKind::Constraint(ConstraintKind::WhereDragged) {
-        let p = Geo { x: &x[..] }.at(one.eq.pt(0), one.eq.wp());
+        let p = Geo {
+            x: &x[..],
+            k: &one.eq.consts,
+        }
+        .at(one.eq.pt(0), one.eq.wp());
         one.eq.target = [p.x, p.y, p.z];
     }
     one
