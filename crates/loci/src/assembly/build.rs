@@ -1,8 +1,10 @@
 //! From primitive relations to a core [`System`]: each free component's pose is seven
 //! parameters (a translation and a `normal_in_3d` quaternion) in the solved group; its
 //! references become `point_n_rot_trans` / `normal_n_rot` entities carried by that pose, so
-//! every mate is a set of ordinary core constraints. Grounded components and the world are
-//! constants (plain points and normals in an earlier group) and can never move.
+//! every mate is a set of ordinary core constraints. The core reads those entities as
+//! expressions of the pose, so a free component is seven unknowns however many references it
+//! carries. Grounded components and the world are constants (plain points and normals in an
+//! earlier group) and can never move.
 
 use super::component::Pose;
 use super::math::{self, V3};

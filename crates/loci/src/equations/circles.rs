@@ -77,7 +77,7 @@ pub(super) fn diameter<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
 pub(super) fn pt_on_circle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let ent = e.ent(0);
     let (center, n): (&PointRef, Vec3<S>) = match ent {
-        Ent::Circle { center, q, .. } => (center, g.quat(*q).n()),
+        Ent::Circle { center, q, .. } => (center, g.normal(q).n()),
         Ent::Arc { center, wp, .. } => (center, g.plane_normal(wp)),
         _ => unreachable!("validated: a circle or an arc"),
     };

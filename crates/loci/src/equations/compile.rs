@@ -1,10 +1,12 @@
 //! Turning the constraints of one group into equations.
 
+use super::carried::Carried;
 use super::refs::{Ent, Frame, Locals, PointRef, Resolver};
 use super::{EqKind, Equation, Owner};
 use crate::error::ModelError;
 use crate::model::{
-    Constraint, ConstraintId, ConstraintKind, EntityKind, GroupId, ObjectId, PlaneRule, System,
+    Constraint, ConstraintId, ConstraintKind, EntityKind, GroupId, ObjectId, ParamId, PlaneRule,
+    System,
 };
 
 /// An equation between parameters, removed from the solve by substitution.
@@ -23,6 +25,9 @@ pub(crate) struct Compiled {
     pub links: Vec<Link>,
     /// Constraints left out as copies of an earlier one: `(copy, first)`.
     pub duplicates: Vec<(ConstraintId, ConstraintId)>,
+    /// The entities read as expressions of what carries them: their own parameters are no
+    /// unknowns, their implicit equations are not among the kernels.
+    pub carried: Carried,
 }
 
 /// General residuals over a few parameters.
@@ -44,13 +49,22 @@ impl Kernel {
 }
 
 /// Compiles every constraint of `group` and the implicit equations of its entities, reading
-/// `values` (one per parameter, in [`System::params`] order) to pick branches.
+/// `values` (one per parameter, in [`System::params`] order) to pick branches. With
+/// `express`, carried entities are read as expressions (see [`Carried`]); `dragged`
+/// parameters stay unknowns.
 pub(crate) fn compile_group(
     sys: &System,
     group: GroupId,
+    dragged: &[ParamId],
+    express: bool,
     values: &[f64],
 ) -> Result<Compiled, ModelError> {
-    let r = Resolver::new(sys);
+    let carried = if express {
+        Carried::of(sys, group, dragged)
+    } else {
+        Carried::default()
+    };
+    let r = Resolver::carrying(sys, &carried);
     let mut mine: Vec<&Constraint> = sys
         .constraints()
         .iter()
@@ -87,6 +101,8 @@ pub(crate) fn compile_group(
     compile_entities(&r, group, values, &mut x, &mut kernels)?;
     out.kernels.append(&mut kernels);
     out.duplicates = duplicates;
+    drop(r);
+    out.carried = carried;
     Ok(out)
 }
 
@@ -118,8 +134,9 @@ fn compile_entities(
     x: &mut Vec<f64>,
     out: &mut Vec<Kernel>,
 ) -> Result<(), ModelError> {
-    for e in r.sys.entities() {
-        if e.group != group || !implicit(&e.kind) {
+    for (i, e) in r.sys.entities().iter().enumerate() {
+        // A carried entity's condition holds by construction: it is no equation.
+        if e.group != group || !implicit(&e.kind) || r.carries(i) {
             continue;
         }
         let me = ObjectId::Entity(e.h);
@@ -197,6 +214,7 @@ fn compile_entities(
             continue;
         }
         let mut eq = Equation::of_entity(kind, ents, val, target);
+        eq.consts = std::mem::take(&mut l.consts);
         let l = super::planar::compact(&mut eq, &l).unwrap_or(l);
         out.push(kernel(Owner::Entity(e.h), l, eq, values, x));
     }
@@ -255,7 +273,39 @@ pub(crate) fn compile_unmerged_only(
     if !references {
         let mut entities = Vec::new();
         compile_entities(&r, group, values, &mut x, &mut entities)?;
-        out.extend(entities.into_iter().filter(|k| keep(k.owner)));
+        // These equations read carried entities by their own parameters: a carried entity's
+        // implicit equation, which the solve never saw and so never named, comes with the
+        // constraints that read it, or they would seem free of each other.
+        let carried = Carried::of(sys, group, &[]);
+        let mut read = vec![
+            false;
+            if carried.is_empty() {
+                0
+            } else {
+                sys.params().len()
+            }
+        ];
+        if !read.is_empty() {
+            for k in &out {
+                k.locals.iter().for_each(|&p| read[p as usize] = true);
+            }
+        }
+        let tied = |o: Owner| match o {
+            Owner::Entity(h) => sys.entity_index(h).is_some_and(|i| {
+                carried.entity(i)
+                    && sys.entities()[i]
+                        .kind
+                        .params()
+                        .iter()
+                        .any(|p| sys.param_index(*p).is_some_and(|p| read[p]))
+            }),
+            Owner::Constraint(_) => false,
+        };
+        out.extend(
+            entities
+                .into_iter()
+                .filter(|k| keep(k.owner) || (!read.is_empty() && tied(k.owner))),
+        );
     }
     Ok(out)
 }
@@ -271,7 +321,10 @@ pub(super) fn kernel(
     x.extend(l.params.iter().map(|&p| values[p as usize]));
     eq.choose(x);
     if eq.kind == EqKind::Constraint(ConstraintKind::WhereDragged) {
-        let g = super::refs::Geo { x: &x[..] };
+        let g = super::refs::Geo {
+            x: &x[..],
+            k: &eq.consts,
+        };
         let p = g.at(eq.pt(0), eq.wp());
         eq.target = [p.x, p.y, p.z];
     }
@@ -344,7 +397,9 @@ pub(crate) fn resolve_constraint(
             ents.push(r.entity(owner, h, &mut l)?);
         }
     }
-    Ok((Equation::of_constraint(c, wp, pts, ents), l))
+    let mut eq = Equation::of_constraint(c, wp, pts, ents);
+    eq.consts = std::mem::take(&mut l.consts);
+    Ok((eq, l))
 }
 
 fn compile_constraint(

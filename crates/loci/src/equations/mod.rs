@@ -6,6 +6,7 @@
 //! vertical), [`lines`] (distances to lines, lengths, angles), [`circles`] (radii, arcs,
 //! tangency to arcs), [`curves`] (cubics), [`orientation`] (normals).
 
+mod carried;
 mod circles;
 mod compile;
 mod curves;
@@ -18,6 +19,7 @@ mod planar;
 mod points;
 pub(crate) mod refs;
 
+pub(crate) use carried::Carried;
 pub(crate) use compile::{compile_group, compile_unmerged, compile_unmerged_only, Kernel, Link};
 pub(crate) use duplicates::{duplicate_groups, still_duplicates};
 use refs::{Ent, Frame, Geo, PointRef};
@@ -66,6 +68,8 @@ pub(crate) struct Equation {
     /// For `where_dragged`: the position the point must keep. For a 2D angle: its signed
     /// target in radians with its sine and cosine, kept by [`Equation::prepare`].
     pub target: [f64; 3],
+    /// The bases of the carried entities it reads (see [`refs::Konst`]).
+    pub consts: Vec<[f64; 4]>,
 }
 
 impl Equation {
@@ -87,6 +91,7 @@ impl Equation {
             other2: c.other2,
             choice: 0,
             target: [0.0; 3],
+            consts: Vec::new(),
         }
     }
 
@@ -103,6 +108,7 @@ impl Equation {
             other2: false,
             choice: 0,
             target,
+            consts: Vec::new(),
         }
     }
 }
@@ -162,7 +168,7 @@ impl Equation {
 
     /// Writes the residuals at `x` (local slot values).
     pub fn eval<S: Scalar>(&self, x: &[S], out: &mut Rows<S>) {
-        let g = Geo { x };
+        let g = Geo { x, k: &self.consts };
         use ConstraintKind as K;
         let k = match self.kind {
             EqKind::UnitQuaternion => return orientation::unit_quaternion(self, &g, out),
@@ -226,7 +232,7 @@ impl Equation {
 
     /// Picks the branch for kinds whose equations depend on the starting configuration.
     pub fn choose(&mut self, x: &[f64]) {
-        let g = Geo { x };
+        let g = Geo { x, k: &self.consts };
         use ConstraintKind as K;
         self.choice = match self.kind {
             EqKind::Constraint(K::Angle) => lines::choose_angle(self, &g),

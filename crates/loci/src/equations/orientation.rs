@@ -10,7 +10,7 @@ pub(super) fn unit_quaternion<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Row
     let Ent::Normal(q) = e.ent(0) else {
         unreachable!("a normal")
     };
-    out.push(g.quat(*q).norm2() - 1.0);
+    out.push(g.normal(q).norm2() - 1.0);
 }
 
 /// A rotated normal (`ents[0]`) is the rotation (`ents[1]`) times its base (w in `val`,
@@ -25,8 +25,8 @@ pub(super) fn rotated<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
         y: S::cst(e.target[1]),
         z: S::cst(e.target[2]),
     };
-    let want = g.quat(*q).times(base);
-    let own = g.quat(*own);
+    let want = g.normal(q).times(base);
+    let own = g.normal(own);
     out.push(own.w - want.w);
     out.push(own.x - want.x);
     out.push(own.y - want.y);
@@ -44,7 +44,7 @@ fn normals<S: Scalar>(e: &Equation, g: &Geo<S>) -> (Quat<S>, Quat<S>) {
     let (Ent::Normal(a), Ent::Normal(b)) = (e.ent(0), e.ent(1)) else {
         unreachable!("validated: normals")
     };
-    (g.quat(*a), g.quat(*b))
+    (g.normal(a), g.normal(b))
 }
 
 /// Normals `entity_a` and `entity_b` have the same orientation, as SolveSpace means it:

@@ -57,7 +57,7 @@ pub(super) fn rot_translated<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows
     let (Ent::Point(p), Ent::Point(t), Ent::Normal(q)) = (e.ent(0), e.ent(1), e.ent(2)) else {
         unreachable!("resolved: two points and a normal")
     };
-    let q = g.quat(*q);
+    let q = g.normal(q);
     let [bx, by, bz] = e.target.map(S::cst);
     let moved = g
         .pos(t)
@@ -94,7 +94,7 @@ pub(super) fn proj_pt_distance<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Ro
 pub(super) fn direction<S: Scalar>(ent: &Ent, g: &Geo<S>) -> Vec3<S> {
     match ent {
         Ent::Line(l) => g.pos(&l[0]).minus(g.pos(&l[1])),
-        Ent::Normal(q) => g.quat(*q).n(),
+        Ent::Normal(q) => g.normal(q).n(),
         Ent::Workplane(f) => g.plane_normal(f),
         _ => unreachable!("validated: a line or a normal"),
     }

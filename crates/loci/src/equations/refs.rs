@@ -1,5 +1,6 @@
 //! Entities resolved for evaluation: every parameter an equation reads becomes a local slot.
 
+use super::carried::Carried;
 use crate::error::ModelError;
 use crate::geom::{Quat, Scalar, Vec3};
 use crate::model::{EntityId, EntityKind, ObjectId, System};
@@ -16,25 +17,58 @@ pub(crate) struct Frame {
     pub q: [Slot; 4],
 }
 
-/// A point: three coordinates in space, or two in a workplane.
+/// A point: three coordinates in space, or two in a workplane, or an expression of what
+/// carries it (see [`super::carried`]).
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum PointRef {
     P3([Slot; 3]),
-    P2 { wp: Frame, uv: [Slot; 2] },
+    P2 {
+        wp: Frame,
+        uv: [Slot; 2],
+    },
+    /// A constant point carried by a rigid motion: `t + q base q*`, its base (x, y, z) the
+    /// equation's constant `base` (kept apart so that every reference stays as small as a
+    /// point of a workplane: sketches hold many).
+    Moved {
+        t: [Slot; 3],
+        q: [Slot; 4],
+        base: Konst,
+    },
+    /// A point moved by a multiple of a translation: `base + times t`.
+    Shifted {
+        base: [Slot; 3],
+        t: [Slot; 3],
+        times: i32,
+    },
 }
+
+/// An orientation: a quaternion of its own, or a constant one turned by a rotation.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum NormalRef {
+    Q([Slot; 4]),
+    /// `q * base` (see [`super::carried`]), its base (w, x, y, z) the equation's constant
+    /// `base`.
+    Turned {
+        q: [Slot; 4],
+        base: Konst,
+    },
+}
+
+/// Index into an equation's constants (the bases of carried entities).
+pub(crate) type Konst = u16;
 
 /// Any entity, resolved.
 #[derive(Clone, Debug)]
 pub(crate) enum Ent {
     Point(PointRef),
-    Normal([Slot; 4]),
+    Normal(NormalRef),
     Distance(Slot),
     Workplane(Frame),
     Line([PointRef; 2]),
     Cubic([PointRef; 4]),
     Circle {
         center: PointRef,
-        q: [Slot; 4],
+        q: NormalRef,
         radius: Slot,
     },
     Arc {
@@ -49,6 +83,8 @@ pub(crate) enum Ent {
 #[derive(Clone, Debug)]
 pub(crate) struct Locals {
     pub params: SmallVec<[u32; 16]>,
+    /// The constants the equation reads (see [`Konst`]), moved into it once built.
+    pub consts: Vec<[f64; 4]>,
     /// The workplane resolved last, already in these locals: the points of one constraint
     /// nearly always share it, and it is seven parameters to look up.
     last_frame: Option<Frame>,
@@ -60,6 +96,7 @@ impl Default for Locals {
     fn default() -> Self {
         Self {
             params: SmallVec::new(),
+            consts: Vec::new(),
             last_frame: None,
         }
     }
@@ -74,6 +111,12 @@ impl Locals {
         self.params.push(p);
         (self.params.len() - 1) as Slot
     }
+
+    /// The index of constant `v` among the equation's constants.
+    pub fn konst(&mut self, v: [f64; 4]) -> Konst {
+        self.consts.push(v);
+        (self.consts.len() - 1) as Konst
+    }
 }
 
 /// Resolves entity handles into slot-based references.
@@ -84,13 +127,26 @@ pub(crate) struct Resolver<'a> {
     /// this is hot. Filled before any constraint is resolved, so that one resolver serves many
     /// threads.
     frames: Vec<Option<[u32; 7]>>,
+    /// The entities read as expressions of what carries them, if any.
+    carried: Option<&'a Carried>,
 }
 
 impl<'a> Resolver<'a> {
+    /// A resolver that reads every entity by its own parameters.
     pub fn new(sys: &'a System) -> Self {
+        Self::with(sys, None)
+    }
+
+    /// A resolver that reads the entities of `carried` as expressions.
+    pub fn carrying(sys: &'a System, carried: &'a Carried) -> Self {
+        Self::with(sys, (!carried.is_empty()).then_some(carried))
+    }
+
+    fn with(sys: &'a System, carried: Option<&'a Carried>) -> Self {
         let mut r = Self {
             sys,
             frames: Vec::new(),
+            carried,
         };
         let mut frames = vec![None; sys.entities().len()];
         let mut any = false;
@@ -113,6 +169,11 @@ impl<'a> Resolver<'a> {
             r.frames = frames;
         }
         r
+    }
+
+    /// Whether the entity at position `index` is read as an expression of what carries it.
+    pub fn carries(&self, index: usize) -> bool {
+        self.carried.is_some_and(|c| c.entity(index))
     }
 
     fn cached_frame(&self, h: EntityId, index: usize, l: &mut Locals) -> Option<Frame> {
@@ -212,6 +273,9 @@ impl<'a> Resolver<'a> {
                 _ => Err(self.wrong(me, wp, "a workplane")),
             }
         };
+        if self.carried.is_some_and(|c| c.entity(index)) {
+            return self.carried_entity(h, &e.kind, l, depth);
+        }
         Ok(match &e.kind {
             EntityKind::PointIn3d { params } => {
                 Ent::Point(PointRef::P3(self.params(h, params, l)?))
@@ -230,9 +294,9 @@ impl<'a> Resolver<'a> {
             }
             // Likewise a rotated normal has a quaternion of its own.
             EntityKind::NormalIn3d { params } | EntityKind::NormalNRot { params, .. } => {
-                Ent::Normal(self.params(h, params, l)?)
+                Ent::Normal(NormalRef::Q(self.params(h, params, l)?))
             }
-            EntityKind::NormalIn2d => Ent::Normal(frame_of(l)?.q),
+            EntityKind::NormalIn2d => Ent::Normal(NormalRef::Q(frame_of(l)?.q)),
             EntityKind::Distance { param } => Ent::Distance(self.param(h, *param, l)?),
             EntityKind::Workplane { origin, normal } => {
                 let o = match sub(l, *origin)? {
@@ -240,7 +304,7 @@ impl<'a> Resolver<'a> {
                     _ => return Err(self.wrong(me, *origin, "a 3D point")),
                 };
                 let q = match sub(l, *normal)? {
-                    Ent::Normal(q) => q,
+                    Ent::Normal(NormalRef::Q(q)) => q,
                     _ => return Err(self.wrong(me, *normal, "a normal")),
                 };
                 let f = Frame {
@@ -290,6 +354,78 @@ impl<'a> Resolver<'a> {
         })
     }
 
+    /// An entity of [`Carried`] as the expression of what carries it: the parameters read
+    /// are the carrier's, never its own.
+    fn carried_entity(
+        &self,
+        h: EntityId,
+        kind: &EntityKind,
+        l: &mut Locals,
+        depth: u32,
+    ) -> Result<Ent, ModelError> {
+        let me = ObjectId::Entity(h);
+        let rotation = |l: &mut Locals, r: EntityId| match self.entity_depth(me, r, l, depth + 1)? {
+            Ent::Normal(NormalRef::Q(q)) => Ok(q),
+            _ => Err(self.wrong(me, r, "a 3D normal")),
+        };
+        Ok(match kind {
+            EntityKind::PointNRotTrans {
+                base,
+                translation,
+                rotation: rot,
+                ..
+            } => {
+                let t = self.params(h, translation, l)?;
+                // A point at the part's origin is its translation: it reads no rotation, so
+                // its equations leave the rotation's columns of the Jacobian alone (a
+                // revolute chain's pivots).
+                if *base == [0.0; 3] {
+                    return Ok(Ent::Point(PointRef::P3(t)));
+                }
+                let q = rotation(l, *rot)?;
+                let [x, y, z] = *base;
+                Ent::Point(PointRef::Moved {
+                    t,
+                    q,
+                    base: l.konst([x, y, z, 0.0]),
+                })
+            }
+            EntityKind::NormalNRot {
+                base,
+                rotation: rot,
+                ..
+            } => {
+                let q = rotation(l, *rot)?;
+                // Turned by nothing, it is the rotation itself.
+                Ent::Normal(if *base == [1.0, 0.0, 0.0, 0.0] {
+                    NormalRef::Q(q)
+                } else {
+                    NormalRef::Turned {
+                        q,
+                        base: l.konst(*base),
+                    }
+                })
+            }
+            EntityKind::PointNTrans {
+                base,
+                translation,
+                times,
+                ..
+            } => {
+                let b = match self.entity_depth(me, *base, l, depth + 1)? {
+                    Ent::Point(PointRef::P3(s)) => s,
+                    _ => return Err(self.wrong(me, *base, "a 3D point")),
+                };
+                Ent::Point(PointRef::Shifted {
+                    base: b,
+                    t: self.params(h, translation, l)?,
+                    times: *times,
+                })
+            }
+            _ => unreachable!("carried entities are moved points and normals"),
+        })
+    }
+
     fn wrong(&self, owner: ObjectId, h: EntityId, expected: &'static str) -> ModelError {
         match self.sys.entity(h) {
             Some(e) => ModelError::WrongKind {
@@ -304,9 +440,10 @@ impl<'a> Resolver<'a> {
     }
 }
 
-/// Geometry read from local slot values.
+/// Geometry read from local slot values and the equation's constants.
 pub(crate) struct Geo<'a, S> {
     pub x: &'a [S],
+    pub k: &'a [[f64; 4]],
 }
 
 impl<S: Scalar> Geo<'_, S> {
@@ -330,10 +467,41 @@ impl<S: Scalar> Geo<'_, S> {
         Vec3::new(self.p(s[0]), self.p(s[1]), self.p(s[2]))
     }
 
+    /// An orientation's quaternion.
+    #[inline]
+    pub fn normal(&self, n: &NormalRef) -> Quat<S> {
+        match n {
+            NormalRef::Q(q) => self.quat(*q),
+            NormalRef::Turned { q, base } => {
+                let b = self.k[*base as usize];
+                self.quat(*q).times(Quat {
+                    w: S::cst(b[0]),
+                    x: S::cst(b[1]),
+                    y: S::cst(b[2]),
+                    z: S::cst(b[3]),
+                })
+            }
+        }
+    }
+
     /// The point in space.
     pub fn pos(&self, p: &PointRef) -> Vec3<S> {
         match p {
             PointRef::P3(s) => self.v3(*s),
+            // As a moved point's implicit equation has it: `q p q*` written with the
+            // quaternion's rotated axes, `p.x U + p.y V + p.z N`.
+            PointRef::Moved { t, q, base } => {
+                let q = self.quat(*q);
+                let b = self.k[*base as usize];
+                let [bx, by, bz] = [b[0], b[1], b[2]].map(S::cst);
+                self.v3(*t)
+                    .plus(q.u().scale(bx))
+                    .plus(q.v().scale(by))
+                    .plus(q.n().scale(bz))
+            }
+            PointRef::Shifted { base, t, times } => self
+                .v3(*base)
+                .plus(self.v3(*t).scale(S::cst(f64::from(*times)))),
             PointRef::P2 { wp, uv } => {
                 let q = self.quat(wp.q);
                 let (u, v) = (self.p(uv[0]), self.p(uv[1]));

@@ -28,7 +28,7 @@ pub use config::Config;
 pub(crate) use gram::MAX_PRODUCTS;
 pub use report::{Outcome, Report};
 
-use crate::equations::{compile_group, still_duplicates, Link, Owner};
+use crate::equations::{compile_group, still_duplicates, Carried, Link, Owner};
 use crate::error::SolveError;
 use crate::model::{ConstraintId, GroupId, ParamId, System};
 use crate::par;
@@ -73,7 +73,7 @@ pub(crate) fn solve_core(
     sys.validate()?;
     check_group(sys, group)?;
     let mut cache = Cache::default();
-    let (report, values) = solve_values(sys, group, dragged, cfg, &mut cache, None)?;
+    let (report, values, _) = solve_values_checked(sys, group, dragged, cfg, &mut cache)?;
     if !report.outcome.is_ok() {
         if let Some(done) = constructed(sys, group, dragged, cfg, &mut cache)? {
             return Ok(done);
@@ -132,6 +132,10 @@ struct Cache {
     kernels: Vec<crate::equations::Kernel>,
     /// Constraints left out as copies of others: `(copy, first)`.
     duplicates: Vec<(ConstraintId, ConstraintId)>,
+    /// Entities read as expressions of their carriers, written back after the solve.
+    carried: Carried,
+    /// Every carried entity kept as its own unknowns with its implicit equation.
+    plain: bool,
     /// Merged and fixed parameters, columns and components.
     plan: Option<Plan>,
     components: Vec<Component>,
@@ -198,7 +202,8 @@ fn solve_cached(
     cfg: &Config,
     cache: &mut Cache,
 ) -> Result<Report, SolveError> {
-    let (mut report, mut values) = solve_values(sys, group, dragged, cfg, cache, None)?;
+    let (mut report, mut values, plain) = solve_values_checked(sys, group, dragged, cfg, cache)?;
+    let used = plain.as_ref().unwrap_or(cache);
     if matches!(
         report.outcome,
         Outcome::Inconsistent | Outcome::DidNotConverge
@@ -215,8 +220,8 @@ fn solve_cached(
             &values,
             cfg,
             &mut report,
-            &cache.kernels,
-            &cache.links,
+            &used.kernels,
+            &used.links,
         );
         // Nothing shown to fail on its own: Newton from the whole drawing may have folded the
         // sketch on its way. Build the solution up one constraint at a time instead.
@@ -232,6 +237,35 @@ fn solve_cached(
         sys.write_group_values(group, &values);
     }
     Ok(report)
+}
+
+/// [`solve_values`], and when it fails with carried entities read as expressions, the solve
+/// again with each of them its own unknowns and implicit equation (the cache of that solve
+/// returned too). An impossible system has no solution for the two to agree on: Newton
+/// stops at the least-squares point of different equations, and a point carried off its
+/// part is what lets the dependent rows of the conflict show; the verdict and the names are
+/// then those a solve without expressions gives. Only failures pay for it.
+fn solve_values_checked(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    cache: &mut Cache,
+) -> Result<(Report, Vec<f64>, Option<Cache>), SolveError> {
+    let (report, values) = solve_values(sys, group, dragged, cfg, cache, None)?;
+    let failed = matches!(
+        report.outcome,
+        Outcome::Inconsistent | Outcome::DidNotConverge
+    );
+    if !failed || cache.carried.is_empty() {
+        return Ok((report, values, None));
+    }
+    let mut plain = Cache {
+        plain: true,
+        ..Cache::default()
+    };
+    let (report, values) = solve_values(sys, group, dragged, cfg, &mut plain, None)?;
+    Ok((report, values, Some(plain)))
 }
 
 /// The solve itself: the report and the value of every parameter where it stopped.
@@ -255,11 +289,15 @@ fn solve_values(
         cache.key = None;
     }
     if cache.key != Some(key) {
-        *cache = Cache::default();
-        let compiled = compile_group(sys, group, &values)?;
+        *cache = Cache {
+            plain: cache.plain,
+            ..Cache::default()
+        };
+        let compiled = compile_group(sys, group, dragged, !cache.plain, &values)?;
         cache.kernels = compiled.kernels;
         cache.links = compiled.links;
         cache.duplicates = compiled.duplicates;
+        cache.carried = compiled.carried;
         cache.key = Some(key);
     } else {
         refresh(sys, &values, cache);
@@ -280,6 +318,7 @@ fn solve_values(
                 dragged,
                 &cache.kernels,
                 &cache.links,
+                &cache.carried,
                 &values,
                 tol,
             )?;
@@ -478,6 +517,8 @@ fn solve_values(
             };
         }
     }
+    // Carried entities follow what carries them, wherever the solve stopped.
+    cache.carried.write_back(sys, &mut out);
     Ok((report, out))
 }
 

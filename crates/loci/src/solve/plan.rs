@@ -3,7 +3,7 @@
 //! the structure of the system only, so a [`super::Solver`] keeps it between solves.
 
 use super::substitute::Substitution;
-use crate::equations::{Kernel, Link};
+use crate::equations::{Carried, Kernel, Link};
 use crate::error::SolveError;
 use crate::model::{GroupId, ParamId, System};
 
@@ -78,12 +78,18 @@ impl Plan {
         dragged: &[ParamId],
         kernels: &[Kernel],
         links: &[Link],
+        carried: &Carried,
         values: &[f64],
         tol: f64,
     ) -> Result<(Self, Substitution), SolveError> {
         let params = sys.params();
         let np = params.len();
-        let unknown: Vec<bool> = params.iter().map(|p| p.group == group).collect();
+        // A carried entity's own parameters are read from its carrier after the solve.
+        let unknown: Vec<bool> = params
+            .iter()
+            .enumerate()
+            .map(|(i, p)| p.group == group && !carried.param(i))
+            .collect();
         let mut is_dragged = vec![false; np];
         for h in dragged {
             let i = sys.param_index(*h).ok_or(SolveError::UnknownDragged(h.0))?;

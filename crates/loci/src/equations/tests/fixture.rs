@@ -518,7 +518,11 @@ pub(super) fn compile(sys: &System, c: &Constraint) -> One {
     let x = one.x(sys);
     one.eq.choose(&x);
     if one.eq.kind == EqKind::Constraint(ConstraintKind::WhereDragged) {
-        let p = Geo { x: &x[..] }.at(one.eq.pt(0), one.eq.wp());
+        let p = Geo {
+            x: &x[..],
+            k: &one.eq.consts,
+        }
+        .at(one.eq.pt(0), one.eq.wp());
         one.eq.target = [p.x, p.y, p.z];
     }
     one
@@ -531,7 +535,11 @@ pub(super) fn compile_implicit(sys: &System, h: u32) -> One {
     sys.validate().expect("the fixture builds a valid model");
     let e = sys.entity(EntityId(h)).expect("entity exists");
     let values: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
-    let compiled = compile_group(sys, e.group, &values).expect("group compiles");
+    // The condition itself, as a solve that keeps the entity's own unknowns has it (a solve
+    // reads a carried entity as its expression instead, with no condition).
+    let compiled =
+        super::super::carried::without(|| compile_group(sys, e.group, &[], true, &values))
+            .expect("group compiles");
     compiled
         .kernels
         .into_iter()

@@ -10,6 +10,7 @@
 //! Each case is built in up to three forms ([`Form`]): in a workplane, free in space, and in a
 //! workplane on points that belong to another workplane or to space.
 
+mod carried;
 mod circles;
 mod curves;
 mod fast;
