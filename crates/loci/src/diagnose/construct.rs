@@ -20,7 +20,7 @@
 
 use super::minimal::solve_alone;
 use super::unmerged::Equations;
-use crate::equations::{EqKind, Equation, Owner};
+use crate::equations::{EqKind, Equation, Kernel, Owner};
 use crate::model::ConstraintKind;
 use crate::model::{GroupId, ParamId, System};
 use crate::solve::Config;
@@ -45,7 +45,6 @@ pub(crate) fn construct(
     start: &[f64],
     scale_of_param: &dyn Fn(usize) -> f64,
     cfg: &Config,
-    rechoose: bool,
 ) -> Option<Vec<f64>> {
     if kernels.len() > CONSTRUCT_UP_TO {
         return None;
@@ -60,7 +59,6 @@ pub(crate) fn construct(
     let (base, mut order): (Vec<usize>, Vec<usize>) = kernels
         .iter()
         .partition(|&&k| matches!(eqs.kernels[k].owner, Owner::Entity(_)));
-    let mut xs = Vec::new();
     for _ in 0..ROUNDS {
         let mut defs = eqs.kernels.clone();
         let mut values = start.to_vec();
@@ -74,31 +72,7 @@ pub(crate) fn construct(
             let mut rest = Vec::new();
             for k in pending {
                 have.push(k);
-                let mut added;
-                if rechoose {
-                    // As if the user added it to the sketch as it stands now: its branch
-                    // (which way an angle turns, which side of a line an arc touches) is
-                    // the one the sketch shows now, not the drawing's; and if that one
-                    // cannot hold, the other way an angle can turn.
-                    let kern = &mut defs[k];
-                    kern.gather(&values, &mut xs);
-                    kern.eq.choose(&xs);
-                    if kern.eq.rows(&xs) != kern.rows {
-                        kern.eq = eqs.kernels[k].eq.clone();
-                    }
-                    let other = other_turn(&kern.eq);
-                    added = solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg);
-                    if let (false, Some(eq)) = (added, other) {
-                        let chosen = std::mem::replace(&mut defs[k].eq, eq);
-                        added = solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg);
-                        if !added {
-                            defs[k].eq = chosen;
-                        }
-                    }
-                } else {
-                    added = solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg);
-                }
-                if added {
+                if add(eqs, &mut defs, &have, k, &mut values, scale_of_param, cfg) {
                     progressed = true;
                 } else {
                     have.pop();
@@ -122,6 +96,41 @@ pub(crate) fn construct(
         order = next;
     }
     None
+}
+
+/// Adds kernel `k` (the last of `have`) to the sketch at `values`, as if the user added it to
+/// the sketch as it stands now: its branch (which way an angle turns, which side of a line an
+/// arc touches) is the one the sketch shows now, not the drawing's; and if that one cannot
+/// hold, the other way an angle can turn. On success `values` hold every kernel of `have`.
+fn add(
+    eqs: &Equations,
+    defs: &mut [Kernel],
+    have: &[usize],
+    k: usize,
+    values: &mut [f64],
+    scale_of_param: &dyn Fn(usize) -> f64,
+    cfg: &Config,
+) -> bool {
+    let mut xs = Vec::new();
+    let kern = &mut defs[k];
+    kern.gather(values, &mut xs);
+    kern.eq.choose(&xs);
+    if kern.eq.rows(&xs) != kern.rows {
+        kern.eq = eqs.kernels[k].eq.clone();
+    }
+    let other = other_turn(&kern.eq);
+    if solve_alone(eqs, defs, have, values, scale_of_param, cfg) {
+        return true;
+    }
+    let Some(eq) = other else {
+        return false;
+    };
+    let chosen = std::mem::replace(&mut defs[k].eq, eq);
+    let added = solve_alone(eqs, defs, have, values, scale_of_param, cfg);
+    if !added {
+        defs[k].eq = chosen;
+    }
+    added
 }
 
 /// A 2D angle (or equal angles) turning the other way: the other branch [`Equation::choose`]
@@ -161,9 +170,6 @@ pub(crate) fn construct_group(
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let eqs = Equations::new(sys, group, &start).ok()?;
     let kernels: Vec<usize> = (0..eqs.kernels.len()).collect();
-    if kernels.len() > CONSTRUCT_UP_TO {
-        return None;
-    }
     let dragged: Vec<usize> = dragged.iter().filter_map(|&h| sys.param_index(h)).collect();
     let scale = |p: usize| {
         if dragged.contains(&p) {
@@ -172,5 +178,5 @@ pub(crate) fn construct_group(
             1.0
         }
     };
-    construct(&eqs, &kernels, &start, &scale, cfg, true)
+    construct(&eqs, &kernels, &start, &scale, cfg)
 }

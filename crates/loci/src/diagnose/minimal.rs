@@ -62,7 +62,7 @@ fn check(
     }
     build
         && starts.last().is_some_and(|start| {
-            construct(eqs, kernels, start, &|_| 1.0, cfg, true).is_some()
+            construct(eqs, kernels, start, &|_| 1.0, cfg).is_some()
                 || other_turns_hold(eqs, kernels, start, cfg)
         })
 }
