@@ -1,7 +1,6 @@
 """SolveSpace's own Python tests (its repository's ``python/tests/test.py``), run against
 ``loci.slvs``: the same sketches, built with the same calls, must give the same numbers."""
 
-import math
 from math import radians
 
 import pytest
@@ -95,29 +94,8 @@ def test_jansen_linkage() -> None:
     line_base = slvs.add_line_2d(g, p0, p8, wp)
     slvs.angle(g, line0, line_base, 45, wp, False)
     solved(g)
-    # SolveSpace's test expects p8 = (18.93036, 13.63778). The linkage is under-constrained
-    # (its workplane is in the solved group too): that is one solution among many, where
-    # SolveSpace's Newton path happens to end. loci's ends elsewhere, at p8 = (19.35966,
-    # 14.03307), so this test checks that every constraint holds there instead (the one
-    # documented difference of the drop-in, see docs/python.md).
-    assert value(p8, 0) == pytest.approx(19.35966, abs=1e-4)
-    assert value(p8, 1) == pytest.approx(14.03307, abs=1e-4)
-
-    def dist(a: slvs.Slvs_Entity, b: slvs.Slvs_Entity) -> float:
-        return math.hypot(value(a, 0) - value(b, 0), value(a, 1) - value(b, 1))
-
-    for a, b, d in [
-        (p0, p1, 15), (p2, p3, 41.5), (p3, p4, 55.8), (p2, p4, 40.1), (p5, p6, 65.7),
-        (p6, p7, 49.0), (p5, p7, 36.7), (p1, p3, 50), (p1, p7, 61.9),
-    ]:
-        assert dist(a, b) == pytest.approx(d, abs=1e-9)
-    # Dragged points stay; line_base is 45 degrees from line0.
-    assert (value(p0, 0), value(p0, 1)) == (0, 0)
-    assert (value(p2, 0), value(p2, 1)) == (-38, -7.8)
-    u = (value(p1, 0), value(p1, 1))
-    v = (value(p8, 0), value(p8, 1))
-    cos = (u[0] * v[0] + u[1] * v[1]) / (math.hypot(*u) * math.hypot(*v))
-    assert math.degrees(math.acos(cos)) == pytest.approx(45, abs=1e-9)
+    assert value(p8, 0) == pytest.approx(18.93036, abs=1e-4)
+    assert value(p8, 1) == pytest.approx(13.63778, abs=1e-4)
 
 
 def test_nut_cracker() -> None:

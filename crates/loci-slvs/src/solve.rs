@@ -63,8 +63,12 @@ pub fn solve_arrays(
     // Always look for the failing constraints: libslvs names conflicting ones even when
     // calculateFaileds is 0, and only leaves out the redundant ones then. A program written
     // for libslvs expects its answer for an under-constrained sketch, the end of Newton's
-    // path, not the solution nearest the drawing that the Rust API gives by default.
-    let cfg = Config::default().with_nearest(false);
+    // path, not the solution nearest the drawing that the Rust API gives by default; and
+    // that path depends on how the equations are written, so 2D angles are written as
+    // libslvs writes them.
+    let cfg = Config::default()
+        .with_nearest(false)
+        .with_solvespace_angles(true);
     let report = match loci::solve(&mut sys, hg.into(), &dragged, &cfg) {
         // libslvs answers okay, DOF 0, for a group with nothing in it, and programs written
         // for it rely on that; loci does the same, and says why in Loci_Slvs_LastError.

@@ -818,7 +818,7 @@ fn unknown_fields_are_errors_naming_the_object() {
             "\"speed\"",
             "solve: unknown field \"options.speed\"; \"options\" has \"tolerance\", \
              \"max_iterations\", \"dragged_scale\", \"rank_tolerance\", \
-             \"verify_conflicts_up_to\" and \"nearest\"",
+             \"verify_conflicts_up_to\", \"nearest\" and \"solvespace_angles\"",
         ),
         (
             edit(TRIANGLE, "\"h\": 11,", "\"h\": 11, \"h\": 12,", 0),

@@ -129,6 +129,27 @@ fn the_jansen_linkage_lands_nearest_the_drawing() {
     assert!((plain_moved - 20.4266).abs() < 1e-3, "{plain_moved}");
 }
 
+#[test]
+fn the_jansen_linkage_ends_where_solvespace_does_with_its_angle_form() {
+    // SolveSpace writes a 2D angle as cos(angle) - cos(val); Newton's steps follow that form,
+    // and with it (and no slide to the nearest solution) loci ends at the configuration
+    // SolveSpace's own test asserts: p8 (params 24, 25) at (18.93036, 13.63778).
+    let mut sys = load("jansen_linkage.json");
+    let start = sys.clone();
+    let cfg = Config::default()
+        .with_nearest(false)
+        .with_solvespace_angles(true);
+    let r = solve(&mut sys, 1.into(), &[], &cfg).unwrap();
+    assert!(r.outcome.is_ok() && r.residual <= 1e-9, "{r:?}");
+    let p8 = (sys.value(24.into()).unwrap(), sys.value(25.into()).unwrap());
+    assert!((p8.0 - 18.93036).abs() < 1e-5, "{p8:?}");
+    assert!((p8.1 - 13.63778).abs() < 1e-5, "{p8:?}");
+    assert!((movement(&start, &sys) - 20.2081).abs() < 1e-3);
+    // The answer is judged with loci's own signed form: the angle holds on its branch.
+    let again = solve(&mut sys.clone(), 1.into(), &[], &Config::default()).unwrap();
+    assert_eq!(again.iterations, 0, "{again:?}");
+}
+
 /// `n` distances between one pair of points of a workplane (values alternating 10 and 11
 /// when `mixed`), as `gen_pair.py` writes them.
 fn pair(n: u32, mixed: bool) -> System {

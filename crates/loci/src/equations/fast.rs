@@ -70,6 +70,9 @@ fn angle(e: &Equation, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f6
     let Some(wp) = e.wp.as_ref() else {
         return false;
     };
+    if e.choice == super::lines::COSINE_FORM {
+        return false;
+    }
     let (Some(Ent::Line(l0)), Some(Ent::Line(l1))) = (e.ents.first(), e.ents.get(1)) else {
         return false;
     };

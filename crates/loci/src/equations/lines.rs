@@ -106,6 +106,13 @@ fn dirs<S: Scalar>(e: &Equation, g: &Geo<S>, i: usize, j: usize) -> (Vec3<S>, Ve
     (vector(e, g, i, e.wp()), vector(e, g, j, e.wp()))
 }
 
+/// The `choice` of a 2D angle written as SolveSpace writes it, `cos(angle) - cos(val)`.
+pub(super) const COSINE_FORM: u8 = 2;
+
+/// The largest `|cos(val)|` at which a 2D angle may take the cosine form: closer to 0 or 180
+/// degrees its gradient vanishes with the sine.
+pub(super) const COSINE_FORM_LIMIT: f64 = 0.99;
+
 /// The target angle in radians, with `other` meaning the supplement.
 pub(super) fn target(e: &Equation) -> f64 {
     let t = e.val.to_radians();
@@ -133,11 +140,15 @@ pub(super) fn choose_angle(e: &Equation, g: &Geo<f64>) -> u8 {
 /// `sin(angle - val)` it vanishes only at the target, not also at the target plus 180 degrees
 /// (the supplement's mirror image, which Newton could otherwise reach from a distant start);
 /// and being linear in the angle, Newton reaches the target from anywhere on its side.
+///
+/// With [`crate::Config::solvespace_angles`] a 2D angle is written as in space (`choice`
+/// [`COSINE_FORM`]), so that Newton follows SolveSpace's path.
 pub(super) fn angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let (a, b) = dirs(e, g, 0, 1);
     let t = target(e);
     match e.wp {
         None => out.push(cosine(a, b) - t.cos()),
+        Some(_) if e.choice == COSINE_FORM => out.push(cosine(a, b) - t.cos()),
         Some(_) => {
             let t = if e.choice == 1 { -t } else { t };
             // |a||b| sin(angle) and |a||b| cos(angle): atan2 does not need them normalised.

@@ -230,8 +230,38 @@ impl Equation {
         }
     }
 
+    /// Whether this is an angle between two directions of a workplane.
+    pub fn is_planar_angle(&self) -> bool {
+        self.kind == EqKind::Constraint(ConstraintKind::Angle) && self.wp.is_some()
+    }
+
+    /// Whether this is a 2D angle in SolveSpace's unsigned cosine form, which holds turning
+    /// either way.
+    pub fn is_unsigned_angle(&self) -> bool {
+        self.is_planar_angle() && self.choice == lines::COSINE_FORM
+    }
+
+    /// Writes a 2D angle as SolveSpace does, `cos(angle) - cos(val)` (see
+    /// [`crate::Config::solvespace_angles`]), where that form keeps its gradient; elsewhere
+    /// the signed form, with its branch chosen at `x` (the equation's local values).
+    pub fn write_angle_as_solvespace(&mut self, x: &[f64]) {
+        if !self.is_planar_angle() {
+            return;
+        }
+        if lines::target(self).cos().abs() <= lines::COSINE_FORM_LIMIT {
+            self.choice = lines::COSINE_FORM;
+        } else if self.choice == lines::COSINE_FORM {
+            self.choice = 0;
+            self.choose(x);
+        }
+    }
+
     /// Picks the branch for kinds whose equations depend on the starting configuration.
     pub fn choose(&mut self, x: &[f64]) {
+        if self.is_unsigned_angle() {
+            // SolveSpace's form has no branch.
+            return;
+        }
         let g = Geo { x, k: &self.consts };
         use ConstraintKind as K;
         self.choice = match self.kind {

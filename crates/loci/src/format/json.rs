@@ -66,6 +66,9 @@ pub struct Options {
     /// See [`Config::nearest`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub nearest: Option<bool>,
+    /// See [`Config::solvespace_angles`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub solvespace_angles: Option<bool>,
 }
 
 impl SolveRequest {
@@ -83,6 +86,7 @@ impl SolveRequest {
                 o.verify_conflicts_up_to.unwrap_or(d.verify_conflicts_up_to),
             )
             .with_nearest(o.nearest.unwrap_or(d.nearest))
+            .with_solvespace_angles(o.solvespace_angles.unwrap_or(d.solvespace_angles))
             .with_find_failed(self.calculate_failed)
     }
 }

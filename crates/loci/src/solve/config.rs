@@ -40,6 +40,16 @@ pub struct Config {
     /// degrees of freedom takes 44 iterations instead of 6; a 2D chain of as many segments
     /// 4, as without it); `false` is the faster SolveSpace behaviour.
     pub nearest: bool,
+    /// Whether 2D angles are written as SolveSpace writes them, `cos(angle) - cos(val)`,
+    /// instead of loci's signed difference `angle - val`. Both hold at the same
+    /// configurations on the branch the angle starts on, but Newton's steps follow the
+    /// equations' form, so on an under-constrained sketch the two end at different solutions;
+    /// with this (and `nearest` off) a solve ends where SolveSpace's does. The cosine form
+    /// also holds at the angle's mirror image (SolveSpace's angle is unsigned), and it loses
+    /// its gradient at 0 and 180 degrees: angles within about 8 degrees of those (`|cos(val)|
+    /// > 0.99`) keep the signed form. The `slvs` C library and the `loci.slvs` Python module
+    /// set it. Default `false`.
+    pub solvespace_angles: bool,
     /// Whether the slide to the nearest solution is folded into Newton's steps (each the
     /// projection of the drawing onto the linearised equations) rather than run after Newton
     /// has reached a solution. Both end at the same solution, to the projection's tolerance;
@@ -61,6 +71,7 @@ impl Default for Config {
             find_failed: true,
             verify_conflicts_up_to: 8,
             nearest: true,
+            solvespace_angles: false,
             fold_slide: true,
             reuse_factor: true,
         }
@@ -72,6 +83,13 @@ impl Config {
     #[must_use]
     pub fn with_nearest(mut self, v: bool) -> Self {
         self.nearest = v;
+        self
+    }
+
+    /// Sets [`Config::solvespace_angles`].
+    #[must_use]
+    pub fn with_solvespace_angles(mut self, v: bool) -> Self {
+        self.solvespace_angles = v;
         self
     }
 

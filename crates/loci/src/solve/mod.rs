@@ -302,6 +302,13 @@ fn solve_values(
     } else {
         refresh(sys, &values, cache);
     }
+    if cfg.solvespace_angles {
+        let mut x = Vec::new();
+        for k in cache.kernels.iter_mut().filter(|k| k.eq.is_planar_angle()) {
+            k.gather(&values, &mut x);
+            k.eq.write_angle_as_solvespace(&x);
+        }
+    }
     let tol = cfg.tolerance;
 
     // 2. Substitution: which parameters merge or are fixed depends on the structure only (the

@@ -927,13 +927,14 @@ pub(crate) const CONSTRAINT_FIELDS: [&str; 14] = [
 const PARAM_FIELDS: [&str; 3] = ["h", "group", "val"];
 const TOP_FIELDS: [&str; 4] = ["params", "entities", "constraints", "solve"];
 const SOLVE_FIELDS: [&str; 4] = ["group", "dragged", "calculate_failed", "options"];
-const OPTION_FIELDS: [&str; 6] = [
+const OPTION_FIELDS: [&str; 7] = [
     "tolerance",
     "max_iterations",
     "dragged_scale",
     "rank_tolerance",
     "verify_conflicts_up_to",
     "nearest",
+    "solvespace_angles",
 ];
 
 /// Reads `type`: a name `of` knows, or an error naming all of `names`.
@@ -1249,6 +1250,7 @@ fn solve_request(text: &str, raw: &RawValue) -> Result<SolveRequest, JsonError> 
                 rank_tolerance: p.value("rank_tolerance", number_value)?,
                 verify_conflicts_up_to: p.value("verify_conflicts_up_to", count_value)?,
                 nearest: p.value("nearest", bool_value)?,
+                solvespace_angles: p.value("solvespace_angles", bool_value)?,
             };
             p.finish(&[&OPTION_FIELDS], || ("\"options\"".into(), Vec::new()))?;
             options
