@@ -315,6 +315,8 @@ pub struct Timing {
     /// BREP.io's own relaxation on the same chain, when it applies: what it did, or why it
     /// was not run.
     pub brep: Option<crate::assembly_brep::BrepResult>,
+    /// CadQuery's assembly solver on the same chain, when asked for.
+    pub cadquery: Option<crate::assembly_cadquery::CadqueryResult>,
 }
 
 /// Every component's starting pose as `[tx, ty, tz, w, x, y, z]`: what the peers' runners
@@ -410,16 +412,19 @@ pub fn time(name: &str, make: &dyn Fn() -> Assembly, reps: usize, steps: Option<
         stepped,
         slvs: None,
         brep: None,
+        cadquery: None,
     }
 }
 
 /// The whole set: chains of `sizes` links and, with `others`, the four-bar and a 10 by 10
-/// grid of plates (and the stepped mode's passes).
+/// grid of plates (and the stepped mode's passes); with `cadquery`, CadQuery run by that
+/// interpreter on the chains of up to 1,000 links.
 pub fn run_all(
     sizes: &[usize],
     reps: usize,
     others: bool,
     bench: Option<&std::path::Path>,
+    cadquery: Option<&std::path::Path>,
 ) -> Vec<Timing> {
     let mut out = Vec::new();
     for &n in sizes {
@@ -442,6 +447,19 @@ pub fn run_all(
             };
             crate::assembly_brep::brep_chain(n, passes, std::time::Duration::from_secs(secs), b)
         });
+        if let (Some(py), Some(b)) = (cadquery, bench) {
+            t.cadquery = Some(if n <= 1_000 {
+                crate::assembly_cadquery::cadquery_chain(
+                    n,
+                    if n >= 100 { 1 } else { reps },
+                    std::time::Duration::from_secs(600),
+                    py,
+                    b,
+                )
+            } else {
+                Err("not run (over 1,000 links)".into())
+            });
+        }
         out.push(t);
     }
     if others {
@@ -465,8 +483,8 @@ pub fn run_all(
 #[must_use]
 pub fn table(t: &[Timing]) -> String {
     let mut s = String::new();
-    s.push_str("| assembly | components | mates | loci (ms) | Newton iterations | residual | all mates hold | stepped passes (seed's relaxation) | BREP.io (the seed's own solver) | SolveSpace (slvs) |\n");
-    s.push_str("|---|---:|---:|---:|---:|---:|:---:|---:|---|---|\n");
+    s.push_str("| assembly | components | mates | loci (ms) | Newton iterations | residual | all mates hold | stepped passes (seed's relaxation) | BREP.io (the seed's own solver) | SolveSpace (slvs) | CadQuery |\n");
+    s.push_str("|---|---:|---:|---:|---:|---:|:---:|---:|---|---|---|\n");
     for x in t {
         let stepped = match x.stepped {
             Some((p, true, ms)) => format!("{p} ({ms:.0} ms)"),
@@ -485,9 +503,13 @@ pub fn table(t: &[Timing]) -> String {
             Some(r) => crate::assembly_brep::cell(r, x.ms),
             None => "not run".into(),
         };
+        let cadquery = match &x.cadquery {
+            Some(r) => crate::assembly_cadquery::cell(r, x.ms),
+            None => "not run".into(),
+        };
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {:.2} | {} | {:.1e} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {:.2} | {} | {:.1e} | {} | {} | {} | {} | {} |",
             x.name,
             x.components,
             x.mates,
@@ -497,7 +519,8 @@ pub fn table(t: &[Timing]) -> String {
             if x.converged { "yes" } else { "no" },
             stepped,
             brep,
-            slvs
+            slvs,
+            cadquery
         );
     }
     s

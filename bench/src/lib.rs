@@ -8,6 +8,7 @@
 
 pub mod assembly;
 pub mod assembly_brep;
+pub mod assembly_cadquery;
 pub mod check;
 pub mod compare;
 pub mod drag;

@@ -6,7 +6,7 @@
 //! loci-bench worker SOLVER PROBLEM.json REPS BUDGET_S OUT.json
 //! loci-bench emit FAMILY VARIANT SIZE DIR
 //! loci-bench report DIR
-//! loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only]
+//! loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only] [--cadquery PYTHON]
 //! loci-bench python [--sizes N,N,...] [--python PATH] [--slvs-python PATH] [--limit S]
 //! loci-bench drag [SIZES [STEPS]] [--long] [--peers slvs,planegcs,brep|none] [--peer-limit S]
 //!                                     (sizes as 100,1000,10000; 600 steps)
@@ -329,6 +329,7 @@ fn assembly(args: &[String]) -> Result<()> {
     let mut sizes = vec![10, 100, 1_000, 10_000];
     let mut reps = 5;
     let mut others = true;
+    let mut cadquery: Option<PathBuf> = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -342,7 +343,10 @@ fn assembly(args: &[String]) -> Result<()> {
             }
             "--reps" => reps = it.next().context("--reps needs a value")?.parse()?,
             "--chains-only" => others = false,
-            other => bail!("unknown option {other}; usage: loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only]"),
+            "--cadquery" => {
+                cadquery = Some(it.next().context("--cadquery needs a Python path")?.into());
+            }
+            other => bail!("unknown option {other}; usage: loci-bench assembly [--sizes N,N,...] [--reps N] [--chains-only] [--cadquery PYTHON]"),
         }
     }
     let t = loci_bench::assembly::run_all(
@@ -350,6 +354,7 @@ fn assembly(args: &[String]) -> Result<()> {
         reps,
         others,
         Some(&Path::new(env!("CARGO_MANIFEST_DIR"))),
+        cadquery.as_deref(),
     );
     print!("{}", loci_bench::assembly::table(&t));
     Ok(())
