@@ -45,6 +45,8 @@ pub(crate) struct Built {
 }
 
 struct Builder<'a> {
+    /// Whether signed angles are written exactly (see [`build`]).
+    exact_angles: bool,
     sys: System,
     poses: &'a [Pose],
     free: Vec<Option<PoseParams>>,
@@ -56,13 +58,18 @@ struct Builder<'a> {
 }
 
 /// Builds the system for `prims` (each with the index of its mate) at `poses`; `grounded`
-/// says which components are constants.
+/// says which components are constants. With `exact_angles`, signed angles are written so
+/// that they hold at their target only (B's direction seen in the plane normal to the axis), at some cost;
+/// without, as one perpendicularity, which also holds at the target plus 180 degrees and
+/// where B's direction lies along the axis.
 pub(crate) fn build(
     poses: &[Pose],
     grounded: &[bool],
     prims: &[(usize, Prim)],
+    exact_angles: bool,
 ) -> Result<Built, ModelError> {
     let mut b = Builder {
+        exact_angles,
         sys: System::new(),
         poses,
         free: vec![None; poses.len()],
@@ -228,6 +235,26 @@ impl Builder<'_> {
         Ok((self.point(&l.point())?, self.normal(&l.dir())?))
     }
 
+    /// A workplane through `body`'s origin, normal to `axis` (in the body's frame), carried
+    /// by the body.
+    fn plane_of(&mut self, body: Body, axis: V3) -> Result<EntityId, ModelError> {
+        let key = Self::key(body, 3, axis);
+        if let Some(&e) = self.cache.get(&key) {
+            return Ok(e);
+        }
+        // Only the plane's orientation enters a 2D angle between directions: its origin is
+        // the fixed world origin, which ties nothing to the pose.
+        let origin = self.point(&P {
+            body: None,
+            p: [0.0; 3],
+        })?;
+        let normal = self.normal(&D { body, d: axis })?;
+        let g = self.group_of(body);
+        let e = self.entity(Entity::workplane(0, g, origin.0, normal.0))?;
+        self.cache.insert(key, e);
+        Ok(e)
+    }
+
     fn line(&mut self, l: &L) -> Result<EntityId, ModelError> {
         let a = self.point(&l.point())?;
         let b = self.point(&P {
@@ -311,7 +338,10 @@ impl Builder<'_> {
                     new(K::SameOrientation).with_entities([na.0, nb.0, 0, 0]),
                 )
             }
-            Prim::SignedAngle { a, b, axis, target } => {
+            Prim::SignedAngle { a, b, axis, target } if !self.exact_angles => {
+                // B's direction normal to the direction a quarter turn past the target: one
+                // cheap row, right wherever B's direction is held normal to the axis and
+                // near the target (a hinge, after prealignment); checked after the solve.
                 let (s, c) = target.sin_cos();
                 let u = math::cross(axis, a.d);
                 let dir = math::add(math::scale(a.d, -s), math::scale(u, c));
@@ -324,6 +354,29 @@ impl Builder<'_> {
                     mate,
                     new(K::Perpendicular).with_entities([na.0, nb.0, 0, 0]),
                 )
+            }
+            Prim::SignedAngle { a, b, axis, target } => {
+                // The direction at the target angle from A's about the axis, both held by A;
+                // B's direction seen in the plane normal to the axis must point along it: a
+                // 2D angle of zero in a workplane A carries. Unlike `b ⟂ (axis × t)` it
+                // holds neither at the target plus 180 degrees nor where B's direction lies
+                // along the axis (no angle about the axis there: the residual is half a turn).
+                // The plane reads A's carried origin and axis by their own parameters, tied
+                // to A's pose by their implicit equations; a conflict set is checked without
+                // those, so two angles that fight are named only when something else (a
+                // hinge) holds B's direction in the plane.
+                let (s, c) = target.sin_cos();
+                let u = math::cross(axis, a.d);
+                let t = math::add(math::scale(a.d, c), math::scale(u, s));
+                let nt = self.normal(&D {
+                    body: a.body,
+                    d: math::unit(t).unwrap_or(a.d),
+                })?;
+                let nb = self.normal(&b)?;
+                let wp = self.plane_of(a.body, axis)?;
+                let mut angle = new(K::Angle).with_entities([nt.0, nb.0, 0, 0]);
+                angle.workplane = Some(wp);
+                self.constraint(mate, angle)
             }
         }
     }

@@ -320,39 +320,56 @@ impl Assembly {
                 }
             }
         }
-        let mut poses = start.clone();
-        self.prealign(&prims, &mut poses, &movable);
-        let built = build::build(
-            &poses,
-            &self
-                .components
-                .iter()
-                .map(|c| c.grounded)
-                .collect::<Vec<_>>(),
-            &prims,
-        )?;
-        let mut sys = built.sys;
+        let mut aligned = start.clone();
+        self.prealign(&prims, &mut aligned, &movable);
+        let grounded: Vec<bool> = self.components.iter().map(|c| c.grounded).collect();
         let group = GroupId(build::FREE);
-        let has_free = sys.params().iter().any(|p| p.group == group);
         let cfg = Config::default()
             .with_tolerance(tol)
             .with_max_iterations(self.options.max_iterations);
-        let mut report = crate::Report::empty();
-        if has_free {
-            report = Solver::new(group, &[], cfg.clone()).solve(&mut sys)?;
-            if report.outcome.is_ok() {
-                build::read_poses(&sys, &built.poses, &mut poses);
-            } else {
-                poses = start.clone();
+        // Signed angles are first written as one cheap perpendicularity, which also holds at
+        // the angle's mirror about the axis and where B's direction lies along it. The answer
+        // is then measured mate by mate; a solve that fails, or ends where some mate does not
+        // hold, is done again with the angles written exactly, so that only an impossible
+        // request is reported as one and its conflict is named between the mates that fight.
+        let has_angles = prims
+            .iter()
+            .any(|(_, p)| matches!(p, Prim::SignedAngle { .. }));
+        let attempt = |exact: bool| -> Result<_, AssemblyError> {
+            let mut poses = aligned.clone();
+            let built = build::build(&poses, &grounded, &prims, exact)?;
+            let mut sys = built.sys;
+            let has_free = sys.params().iter().any(|p| p.group == group);
+            let mut report = crate::Report::empty();
+            if has_free {
+                report = Solver::new(group, &[], cfg.clone()).solve(&mut sys)?;
+                if report.outcome.is_ok() {
+                    build::read_poses(&sys, &built.poses, &mut poses);
+                } else {
+                    poses = start.clone();
+                }
+            }
+            Ok((sys, built.poses, built.owner, has_free, report, poses))
+        };
+        let mut solved = attempt(false)?;
+        if has_angles {
+            let (_, _, _, _, report, poses) = &solved;
+            let all_hold = report.outcome.is_ok()
+                && prims
+                    .iter()
+                    .all(|(_, p)| within(p, p.error(&World { poses })));
+            if !all_hold {
+                solved = attempt(true)?;
             }
         }
+        let (sys, built_poses, owner, has_free, report, poses) = solved;
         let diag = if has_free && self.options.diagnose {
             Some(diagnose(&sys, group, &cfg)?)
         } else {
             None
         };
         let mate_of = |m: &Member| match m {
-            Member::Constraint(c) => built.owner.get(&c.0).copied(),
+            Member::Constraint(c) => owner.get(&c.0).copied(),
             Member::Entity(_) => None,
         };
         let ids: Vec<String> = self.mates.iter().map(|m| m.id.clone()).collect();
@@ -458,7 +475,7 @@ impl Assembly {
         let mut components = Vec::new();
         for (i, c) in self.components.iter_mut().enumerate() {
             c.pose = poses[i];
-            let (dof, motions) = match (&diag, built.poses[i]) {
+            let (dof, motions) = match (&diag, built_poses[i]) {
                 (Some(d), Some(pp)) => {
                     freedom::motions(d, &pp, poses[i].translation, poses[i].rotation)
                 }

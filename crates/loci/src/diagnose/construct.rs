@@ -140,7 +140,7 @@ pub(crate) fn other_turn(eq: &Equation) -> Option<Equation> {
         eq.kind,
         EqKind::Constraint(ConstraintKind::Angle | ConstraintKind::EqualAngle)
     );
-    if !turns || eq.wp.is_none() || eq.is_unsigned_angle() {
+    if !turns || eq.wp.is_none() || eq.is_unsigned_angle() || eq.is_straight_angle() {
         return None;
     }
     let mut other = eq.clone();

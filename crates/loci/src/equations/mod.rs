@@ -241,6 +241,11 @@ impl Equation {
         self.is_planar_angle() && self.choice == lines::COSINE_FORM
     }
 
+    /// Whether this is a 2D angle of 0 or 180 degrees, which is the same turning either way.
+    pub fn is_straight_angle(&self) -> bool {
+        self.is_planar_angle() && lines::target(self).sin().abs() < 1e-15
+    }
+
     /// Writes a 2D angle as SolveSpace does, `cos(angle) - cos(val)` (see
     /// [`crate::Config::solvespace_angles`]), where that form keeps its gradient; elsewhere
     /// the signed form, with its branch chosen at `x` (the equation's local values).

@@ -227,6 +227,26 @@ impl<'a> Resolver<'a> {
         }
     }
 
+    /// A carried point or normal (`h`, read elsewhere as an expression of what carries it)
+    /// by its own parameters; `None` for any other entity.
+    fn own(&self, h: EntityId, l: &mut Locals) -> Result<Option<Ent>, ModelError> {
+        let Some(index) = self.sys.entity_index(h) else {
+            return Ok(None);
+        };
+        if !self.carries(index) {
+            return Ok(None);
+        }
+        Ok(match &self.sys.entities()[index].kind {
+            EntityKind::PointNTrans { params, .. } | EntityKind::PointNRotTrans { params, .. } => {
+                Some(Ent::Point(PointRef::P3(self.params(h, params, l)?)))
+            }
+            EntityKind::NormalNRot { params, .. } => {
+                Some(Ent::Normal(NormalRef::Q(self.params(h, params, l)?)))
+            }
+            _ => None,
+        })
+    }
+
     /// Resolves entity `h`; `owner` is named in errors.
     pub fn entity(&self, owner: ObjectId, h: EntityId, l: &mut Locals) -> Result<Ent, ModelError> {
         self.entity_depth(owner, h, l, 0)
@@ -299,12 +319,23 @@ impl<'a> Resolver<'a> {
             EntityKind::NormalIn2d => Ent::Normal(NormalRef::Q(frame_of(l)?.q)),
             EntityKind::Distance { param } => Ent::Distance(self.param(h, *param, l)?),
             EntityKind::Workplane { origin, normal } => {
-                let o = match sub(l, *origin)? {
-                    Ent::Point(PointRef::P3(s)) => s,
+                // A frame is read through its parameters: a carried origin or normal (a
+                // workplane a rigid part carries) by its own, which its implicit equations
+                // then tie to the pose (see `compile_group`).
+                let o = match self.own(*origin, l)? {
+                    Some(Ent::Point(PointRef::P3(s))) => s,
+                    None => match sub(l, *origin)? {
+                        Ent::Point(PointRef::P3(s)) => s,
+                        _ => return Err(self.wrong(me, *origin, "a 3D point")),
+                    },
                     _ => return Err(self.wrong(me, *origin, "a 3D point")),
                 };
-                let q = match sub(l, *normal)? {
-                    Ent::Normal(NormalRef::Q(q)) => q,
+                let q = match self.own(*normal, l)? {
+                    Some(Ent::Normal(NormalRef::Q(q))) => q,
+                    None => match sub(l, *normal)? {
+                        Ent::Normal(NormalRef::Q(q)) => q,
+                        _ => return Err(self.wrong(me, *normal, "a normal")),
+                    },
                     _ => return Err(self.wrong(me, *normal, "a normal")),
                 };
                 let f = Frame {

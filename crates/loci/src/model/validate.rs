@@ -152,7 +152,7 @@ impl System {
                     owner,
                     "normal",
                     *normal,
-                    |t| t == EntityType::NormalIn3d,
+                    EntityType::is_normal_3d,
                     "a 3D normal",
                 )?;
             }
