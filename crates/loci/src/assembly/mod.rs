@@ -342,7 +342,10 @@ impl Assembly {
             let has_free = sys.params().iter().any(|p| p.group == group);
             let mut report = crate::Report::empty();
             if has_free {
-                report = Solver::new(group, &[], cfg.clone()).solve(&mut sys)?;
+                // A failure of the quick form is solved again exactly, which names it.
+                let mut cfg = cfg.clone();
+                cfg.name_conflicts = exact || !has_angles;
+                report = Solver::new(group, &[], cfg).solve(&mut sys)?;
                 if report.outcome.is_ok() {
                     build::read_poses(&sys, &built.poses, &mut poses);
                 } else {

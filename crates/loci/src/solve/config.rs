@@ -59,6 +59,11 @@ pub struct Config {
     /// before, refined, instead of a fresh one. The step is the same to the refinement's
     /// tolerance; the switch is kept to check that.
     pub(crate) reuse_factor: bool,
+    /// Whether a failed solve checks its verdict and names the sets that cannot hold (and,
+    /// when none is shown to, builds the solution up one constraint at a time). Off only for a
+    /// solve whose failure is followed by another solve of the same request, written
+    /// differently, that does all of it.
+    pub(crate) name_conflicts: bool,
 }
 
 impl Default for Config {
@@ -74,6 +79,7 @@ impl Default for Config {
             solvespace_angles: false,
             fold_slide: true,
             reuse_factor: true,
+            name_conflicts: true,
         }
     }
 }

@@ -204,10 +204,12 @@ fn solve_cached(
 ) -> Result<Report, SolveError> {
     let (mut report, mut values, plain) = solve_values_checked(sys, group, dragged, cfg, cache)?;
     let used = plain.as_ref().unwrap_or(cache);
-    if matches!(
-        report.outcome,
-        Outcome::Inconsistent | Outcome::DidNotConverge
-    ) {
+    if cfg.name_conflicts
+        && matches!(
+            report.outcome,
+            Outcome::Inconsistent | Outcome::DidNotConverge
+        )
+    {
         // Check the verdict and name the sets that cannot hold together, found on the
         // unmerged equations where the solve stopped (those of the constraints it found
         // dependent, or left unsatisfied, first) and each shown to fail on its own; only
