@@ -6,7 +6,7 @@
 //! install` in `bench/`); otherwise the reason is reported in its column instead of a time.
 
 use crate::assembly::{chain, start_poses};
-use crate::run::run_with_limit;
+use crate::run::runner_json;
 use std::path::Path;
 use std::process::Command;
 use std::time::Duration;
@@ -71,31 +71,9 @@ pub fn brep_chain(n: usize, max_passes: usize, limit: Duration, bench: &Path) ->
         .arg(&start)
         .arg(max_passes.to_string())
         .arg(&out);
-    let end = run_with_limit(cmd, limit);
+    let v = runner_json(cmd, limit, &out, "node");
     let _ = std::fs::remove_file(&start);
-    let end = end.map_err(|e| format!("node could not start: {e}"))?;
-    match end.status {
-        None => {
-            let _ = std::fs::remove_file(&out);
-            return Err(format!("stopped after {} s", limit.as_secs()));
-        }
-        Some(s) if !s.success() => {
-            let tail: String = end
-                .stderr
-                .lines()
-                .rev()
-                .find(|l| !l.trim().is_empty())
-                .unwrap_or("")
-                .chars()
-                .take(120)
-                .collect();
-            return Err(format!("runner failed: {tail}"));
-        }
-        Some(_) => {}
-    }
-    let text = std::fs::read_to_string(&out).map_err(|e| format!("no output: {e}"))?;
-    let _ = std::fs::remove_file(&out);
-    let v: serde_json::Value = serde_json::from_str(&text).map_err(|e| e.to_string())?;
+    let v = v?;
     let f = |k: &str| v[k].as_f64().unwrap_or(f64::NAN);
     Ok(BrepRun {
         passes: usize::try_from(v["passes"].as_u64().unwrap_or(0)).unwrap_or(usize::MAX),

@@ -7,7 +7,7 @@
 //! environment made with `python3 -m venv cq && cq/bin/pip install cadquery`).
 
 use crate::assembly::{chain, start_poses};
-use crate::run::run_with_limit;
+use crate::run::runner_json;
 use std::path::Path;
 use std::process::Command;
 use std::time::Duration;
@@ -67,31 +67,9 @@ pub fn cadquery_chain(
         .arg(&start)
         .arg(reps.max(1).to_string())
         .arg(&out);
-    let end = run_with_limit(cmd, limit);
+    let v = runner_json(cmd, limit, &out, "python");
     let _ = std::fs::remove_file(&start);
-    let end = end.map_err(|e| format!("python could not start: {e}"))?;
-    match end.status {
-        None => {
-            let _ = std::fs::remove_file(&out);
-            return Err(format!("stopped after {} s", limit.as_secs()));
-        }
-        Some(s) if !s.success() => {
-            let tail: String = end
-                .stderr
-                .lines()
-                .rev()
-                .find(|l| !l.trim().is_empty())
-                .unwrap_or("")
-                .chars()
-                .take(120)
-                .collect();
-            return Err(format!("runner failed: {tail}"));
-        }
-        Some(_) => {}
-    }
-    let text = std::fs::read_to_string(&out).map_err(|e| format!("no output: {e}"))?;
-    let _ = std::fs::remove_file(&out);
-    let v: serde_json::Value = serde_json::from_str(&text).map_err(|e| e.to_string())?;
+    let v = v?;
     if let Some(status) = v["status"].as_str().filter(|s| *s != "ok") {
         return Err(status.to_string());
     }

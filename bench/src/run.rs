@@ -199,6 +199,51 @@ pub struct ChildEnd {
     pub wall: Duration,
 }
 
+impl ChildEnd {
+    /// The last line it wrote to stderr that is not blank, cut to `n` characters: why it
+    /// failed, for a message.
+    #[must_use]
+    pub fn last_words(&self, n: usize) -> String {
+        self.stderr
+            .lines()
+            .rev()
+            .find(|l| !l.trim().is_empty())
+            .unwrap_or("")
+            .chars()
+            .take(n)
+            .collect()
+    }
+}
+
+/// Runs a peer's runner script, `cmd`, which writes its answer as JSON to `out`, for at most
+/// `limit`: the answer, or why there is none, worded for a table cell (`program` names what
+/// could not start).
+///
+/// # Errors
+/// The runner did not start, ran out of time, failed (its last line of stderr), or wrote no
+/// readable JSON.
+pub fn runner_json(
+    cmd: Command,
+    limit: Duration,
+    out: &Path,
+    program: &str,
+) -> Result<serde_json::Value, String> {
+    let end = run_with_limit(cmd, limit).map_err(|e| format!("{program} could not start: {e}"))?;
+    match end.status {
+        None => {
+            let _ = std::fs::remove_file(out);
+            return Err(format!("stopped after {} s", limit.as_secs()));
+        }
+        Some(s) if !s.success() => {
+            return Err(format!("runner failed: {}", end.last_words(120)));
+        }
+        Some(_) => {}
+    }
+    let text = std::fs::read_to_string(out).map_err(|e| format!("no output: {e}"))?;
+    let _ = std::fs::remove_file(out);
+    serde_json::from_str(&text).map_err(|e| e.to_string())
+}
+
 /// Runs `cmd` to the end or until `limit`, then kills it. Output is read on threads so a
 /// chatty child never blocks on a full pipe.
 ///

@@ -20,18 +20,7 @@ fn capture(mut cmd: Command, limit_s: u64) -> Result<String, String> {
     match run_with_limit(cmd, Duration::from_secs(limit_s)) {
         Ok(end) => match end.status {
             Some(s) if s.success() => Ok(end.stdout.trim().to_string()),
-            Some(s) => {
-                let tail: String = end
-                    .stderr
-                    .lines()
-                    .rev()
-                    .find(|l| !l.trim().is_empty())
-                    .unwrap_or("")
-                    .chars()
-                    .take(160)
-                    .collect();
-                Err(format!("{shown} failed ({s}): {tail}"))
-            }
+            Some(s) => Err(format!("{shown} failed ({s}): {}", end.last_words(160))),
             None => Err(format!("{shown} timed out after {limit_s} s")),
         },
         Err(e) => Err(format!("{shown} could not start: {e}")),
