@@ -69,6 +69,25 @@ export function version() {
   return bindings().version();
 }
 
+const OUTCOMES = ["okay", "redundant_okay", "inconsistent", "did_not_converge"];
+
+// A solve's report from its numbers (`packed` in src/system.rs): the object its JSON reads
+// as, fields in the same order, a residual that is no finite number null as in JSON.
+function reportOf(p) {
+  const nf = p[7];
+  const ne = p[8 + nf];
+  const r = { outcome: OUTCOMES[p[0]], dof: p[1], failed: Array.from(p.subarray(8, 8 + nf)) };
+  if (ne > 0) {
+    r.failed_entities = Array.from(p.subarray(9 + nf, 9 + nf + ne));
+  }
+  r.iterations = p[2];
+  r.residual = Number.isFinite(p[3]) ? p[3] : null;
+  r.unknowns = p[4];
+  r.equations = p[5];
+  r.components = p[6];
+  return r;
+}
+
 /** A SolveSpace-model system: parameters, entities and constraints in groups. */
 export class System {
   constructor(inner) {
@@ -123,10 +142,10 @@ export class System {
   solve(group, options = {}) {
     const { dragged = [], ...rest } = options;
     const opts = Object.keys(rest).length ? JSON.stringify(rest) : "";
-    return JSON.parse(call(() => this.inner.solve(group, Uint32Array.from(dragged), opts)));
+    return reportOf(call(() => this.inner.solvePacked(group, Uint32Array.from(dragged), opts)));
   }
   solveRequest() {
-    return JSON.parse(call(() => this.inner.solveRequest()));
+    return reportOf(call(() => this.inner.solveRequestPacked()));
   }
   solveAll() {
     return JSON.parse(call(() => this.inner.solveAll()));

@@ -58,6 +58,21 @@ impl Carried {
             return Self::default();
         }
         let entities = sys.entities();
+        // Most sketches have no carried entity at all: then nothing below is worth counting.
+        let carried_kind = |k: &EntityKind| {
+            matches!(
+                k,
+                EntityKind::PointNRotTrans { .. }
+                    | EntityKind::NormalNRot { .. }
+                    | EntityKind::PointNTrans { .. }
+            )
+        };
+        if !entities
+            .iter()
+            .any(|e| e.group == group && carried_kind(&e.kind))
+        {
+            return Self::default();
+        }
         let params = sys.params();
         // How many entities hold or read each parameter: an own parameter read by anything
         // else must stay an unknown.

@@ -51,7 +51,10 @@ impl Key {
 /// Each constraint of `cs` that repeats an earlier one, with the earlier one:
 /// `(position of the copy, handle of the first)`, in order.
 pub(crate) fn duplicates(cs: &[&Constraint]) -> Vec<(usize, ConstraintId)> {
-    let mut first: FxHashMap<Key, ConstraintId> = FxHashMap::default();
+    // Sized for every constraint at once: growing the table rehashes every key so far, which
+    // cost more than the rest of a small sketch's compilation.
+    let mut first: FxHashMap<Key, ConstraintId> =
+        FxHashMap::with_capacity_and_hasher(cs.len(), rustc_hash::FxBuildHasher);
     let mut out = Vec::new();
     for (i, c) in cs.iter().enumerate() {
         match first.entry(Key::of(c)) {

@@ -418,6 +418,14 @@ impl System {
         g
     }
 
+    /// Whether a parameter, entity or constraint belongs to `group`: `groups().contains(&group)`
+    /// without building the list.
+    pub(crate) fn has_group(&self, group: GroupId) -> bool {
+        self.constraints.iter().any(|c| c.group == group)
+            || self.params.iter().any(|p| p.group == group)
+            || self.entities.iter().any(|e| e.group == group)
+    }
+
     /// Writes `values` (one per parameter, in [`System::params`] order) into the parameters of
     /// `group`: a value edit.
     pub(crate) fn write_group_values(&mut self, group: GroupId, values: &[f64]) {
