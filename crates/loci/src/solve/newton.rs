@@ -209,20 +209,23 @@ impl Component {
         for c in 0..ncols {
             counts[c + 1] += counts[c];
         }
-        let mut fill = counts.clone();
+        // Filled through `counts` itself (each column's start moves up to the next one's as
+        // its entries go in), then shifted back: one table less to allocate.
         let mut entries = vec![(0u32, 0u32); jv];
         for b in &blocks {
             let rows = kernels[b.kernel].rows;
             let cols = &block_cols[b.cols0 as usize..(b.cols0 + b.ncols) as usize];
             for r in 0..rows {
                 for (ci, &c) in cols.iter().enumerate() {
-                    let f = &mut fill[c as usize];
+                    let f = &mut counts[c as usize];
                     entries[*f as usize] =
                         ((b.row0 + r) as u32, (b.jv0 + r * cols.len() + ci) as u32);
                     *f += 1;
                 }
             }
         }
+        counts.copy_within(0..ncols, 1);
+        counts[0] = 0;
         Self {
             blocks,
             rows: row,
