@@ -76,9 +76,14 @@ const OUTCOMES = ["okay", "redundant_okay", "inconsistent", "did_not_converge"];
 function reportOf(p) {
   const nf = p[7];
   const ne = p[8 + nf];
-  const r = { outcome: OUTCOMES[p[0]], dof: p[1], failed: Array.from(p.subarray(8, 8 + nf)) };
+  // Plain loops: a typed-array view per list cost more than the rest of a small report.
+  const failed = new Array(nf);
+  for (let i = 0; i < nf; i++) failed[i] = p[8 + i];
+  const r = { outcome: OUTCOMES[p[0]], dof: p[1], failed };
   if (ne > 0) {
-    r.failed_entities = Array.from(p.subarray(9 + nf, 9 + nf + ne));
+    const entities = new Array(ne);
+    for (let i = 0; i < ne; i++) entities[i] = p[9 + nf + i];
+    r.failed_entities = entities;
   }
   r.iterations = p[2];
   r.residual = Number.isFinite(p[3]) ? p[3] : null;

@@ -48,9 +48,35 @@ impl Key {
     }
 }
 
+impl Key {
+    /// A hash of every field, one step per field: equal keys have equal signatures.
+    fn signature(&self) -> u64 {
+        let id = |e: Option<EntityId>| e.map_or(0, |e| u64::from(e.0) + 1);
+        let mut h = 0u64;
+        let mut add = |x: u64| {
+            h = (h.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+        };
+        add(self.kind as u64);
+        add(id(self.workplane));
+        self.pts.iter().for_each(|&p| add(id(p)));
+        self.ents.iter().for_each(|&e| add(id(e)));
+        add(self.val);
+        add(u64::from(self.other) | u64::from(self.other2) << 1);
+        h
+    }
+}
+
 /// Each constraint of `cs` that repeats an earlier one, with the earlier one:
 /// `(position of the copy, handle of the first)`, in order.
 pub(crate) fn duplicates(cs: &[&Constraint]) -> Vec<(usize, ConstraintId)> {
+    // Copies have equal keys, so equal signatures: when no two signatures are equal (nearly
+    // every sketch), there is no copy, found without the table, whose keys cost a small
+    // sketch as much as the rest of its compilation.
+    let mut sigs: Vec<u64> = cs.iter().map(|c| Key::of(c).signature()).collect();
+    sigs.sort_unstable();
+    if sigs.windows(2).all(|w| w[0] != w[1]) {
+        return Vec::new();
+    }
     // Sized for every constraint at once: growing the table rehashes every key so far, which
     // cost a small sketch as much as the rest of its compilation.
     let mut first: FxHashMap<Key, ConstraintId> =
@@ -150,6 +176,8 @@ mod tests {
                 (10, first(1)),
             ]
         );
+        let distinct: Vec<&Constraint> = [0, 1, 3, 4].iter().map(|&i| &cs[i]).collect();
+        assert!(duplicates(&distinct).is_empty());
         assert!(duplicates(&[]).is_empty());
         assert!(duplicates(&refs[..1]).is_empty());
     }
