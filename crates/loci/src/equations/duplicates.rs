@@ -61,7 +61,7 @@ impl Key {
         self.pts.iter().for_each(|&p| add(id(p)));
         self.ents.iter().for_each(|&e| add(id(e)));
         add(self.val);
-        add(u64::from(self.other) | u64::from(self.other2) << 1);
+        add(u64::from(self.other) | (u64::from(self.other2) << 1));
         h
     }
 }
