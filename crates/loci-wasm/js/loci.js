@@ -69,6 +69,30 @@ export function version() {
   return bindings().version();
 }
 
+const OUTCOMES = ["okay", "redundant_okay", "inconsistent", "did_not_converge"];
+
+// A solve's report from its numbers (`packed` in src/system.rs): the object its JSON reads
+// as, fields in the same order, a residual that is no finite number null as in JSON.
+function reportOf(p) {
+  const nf = p[7];
+  const ne = p[8 + nf];
+  // Plain loops: a typed-array view per list cost more than the rest of a small report.
+  const failed = new Array(nf);
+  for (let i = 0; i < nf; i++) failed[i] = p[8 + i];
+  const r = { outcome: OUTCOMES[p[0]], dof: p[1], failed };
+  if (ne > 0) {
+    const entities = new Array(ne);
+    for (let i = 0; i < ne; i++) entities[i] = p[9 + nf + i];
+    r.failed_entities = entities;
+  }
+  r.iterations = p[2];
+  r.residual = Number.isFinite(p[3]) ? p[3] : null;
+  r.unknowns = p[4];
+  r.equations = p[5];
+  r.components = p[6];
+  return r;
+}
+
 /** A SolveSpace-model system: parameters, entities and constraints in groups. */
 export class System {
   constructor(inner) {
@@ -123,10 +147,10 @@ export class System {
   solve(group, options = {}) {
     const { dragged = [], ...rest } = options;
     const opts = Object.keys(rest).length ? JSON.stringify(rest) : "";
-    return JSON.parse(call(() => this.inner.solve(group, Uint32Array.from(dragged), opts)));
+    return reportOf(call(() => this.inner.solvePacked(group, Uint32Array.from(dragged), opts)));
   }
   solveRequest() {
-    return JSON.parse(call(() => this.inner.solveRequest()));
+    return reportOf(call(() => this.inner.solveRequestPacked()));
   }
   solveAll() {
     return JSON.parse(call(() => this.inner.solveAll()));

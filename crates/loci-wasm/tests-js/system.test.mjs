@@ -64,3 +64,38 @@ test("bad input throws ModelError, SolveError or FormatError naming the object",
   assert.throws(() => System.fromSlvs(new Uint8Array([1, 2, 3])), FormatError);
   assert.throws(() => sys.setValues([1, 2, 3]), loci.InputError);
 });
+
+test("the report built from numbers is the report's JSON, field for field and in order", () => {
+  // Okay, inconsistent (failed constraints), redundant: each solved from the same start by the
+  // raw JSON call and by the wrapper.
+  const build = (extra) => {
+    const sys = new System();
+    [[1, 0], [2, 0], [3, 0], [4, 1], [5, 0], [6, 0], [7, 0]].forEach(([h, v]) => sys.addParam(h, 1, v));
+    sys.addEntity({ h: 101, group: 1, type: "point_in_3d", params: [1, 2, 3] });
+    sys.addEntity({ h: 102, group: 1, type: "normal_in_3d", params: [4, 5, 6, 7] });
+    sys.addEntity({ h: 200, group: 1, type: "workplane", origin: 101, normal: 102 });
+    [[11, 1], [12, 2], [13, 9], [14, 3]].forEach(([h, v]) => sys.addParam(h, 2, v));
+    sys.addEntity({ h: 301, group: 2, type: "point_in_2d", workplane: 200, params: [11, 12] });
+    sys.addEntity({ h: 302, group: 2, type: "point_in_2d", workplane: 200, params: [13, 14] });
+    sys.addConstraint({ h: 1, group: 2, type: "pt_pt_distance", workplane: 200, pt_a: 301, pt_b: 302, val: 10 });
+    extra.forEach((c) => sys.addConstraint(c));
+    return sys;
+  };
+  const cases = [
+    [],
+    [{ h: 3, group: 2, type: "pt_pt_distance", workplane: 200, pt_a: 301, pt_b: 302, val: 12 }],
+    [{ h: 4, group: 2, type: "pt_pt_distance", workplane: 200, pt_a: 302, pt_b: 301, val: 10 }],
+  ];
+  const outcomes = [];
+  for (const extra of cases) {
+    const viaJson = JSON.parse(build(extra).inner.solve(2, new Uint32Array(), ""));
+    const viaNumbers = build(extra).solve(2);
+    assert.equal(JSON.stringify(viaNumbers), JSON.stringify(viaJson));
+    outcomes.push(viaNumbers.outcome);
+    const fromFile = System.fromJson(example("two_points.json"));
+    const rawFile = System.fromJson(example("two_points.json"));
+    const rawReport = JSON.parse(rawFile.inner.solveRequest());
+    assert.equal(JSON.stringify(fromFile.solveRequest()), JSON.stringify(rawReport));
+  }
+  assert.deepEqual(outcomes, ["okay", "inconsistent", "redundant_okay"]);
+});

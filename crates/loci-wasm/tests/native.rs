@@ -168,3 +168,27 @@ fn the_typescript_types_list_every_kind() {
         assert!(dts.contains(&format!("\"{}\"", s.name())));
     }
 }
+
+#[test]
+fn a_packed_report_holds_every_field_of_the_report() {
+    let r = loci::Report {
+        outcome: loci::Outcome::Inconsistent,
+        dof: 2,
+        failed: vec![loci::ConstraintId(3), loci::ConstraintId(70_000)],
+        failed_entities: vec![loci::EntityId(9)],
+        iterations: 5,
+        residual: 0.25,
+        unknowns: 12,
+        equations: 11,
+        components: 1,
+    };
+    assert_eq!(
+        loci_wasm::system::packed(&r),
+        vec![2.0, 2.0, 5.0, 0.25, 12.0, 11.0, 1.0, 2.0, 3.0, 70_000.0, 1.0, 9.0]
+    );
+    let okay = loci::Report::empty();
+    assert_eq!(
+        loci_wasm::system::packed(&okay),
+        vec![0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    );
+}

@@ -192,18 +192,15 @@ impl Reference {
     /// Whether every number is finite.
     #[must_use]
     pub fn is_finite(&self) -> bool {
-        let mut v = self.point().to_vec();
-        match *self {
-            Reference::Face { normal: d, .. }
-            | Reference::Edge { direction: d, .. }
-            | Reference::Axis { direction: d, .. } => v.extend(d),
-            Reference::CircularEdge { axis, radius, .. } => {
-                v.extend(axis);
-                v.push(radius);
+        let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+        finite(&self.point())
+            && match *self {
+                Reference::Face { normal: d, .. }
+                | Reference::Edge { direction: d, .. }
+                | Reference::Axis { direction: d, .. } => finite(&d),
+                Reference::CircularEdge { axis, radius, .. } => finite(&axis) && radius.is_finite(),
+                _ => true,
             }
-            _ => {}
-        }
-        v.iter().all(|x| x.is_finite())
     }
 }
 

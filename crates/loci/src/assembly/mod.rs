@@ -196,7 +196,6 @@ impl Assembly {
                 return Err(AssemblyError::DuplicateComponent(c.name.clone()));
             }
         }
-        let mut ids = std::collections::HashSet::new();
         let mut counts = std::collections::HashMap::new();
         for m in &mut self.mates {
             let n = counts.entry(m.kind.id_prefix()).or_insert(0usize);
@@ -204,7 +203,11 @@ impl Assembly {
             if m.id.is_empty() {
                 m.id = format!("{}{}", m.kind.id_prefix(), n);
             }
-            if !ids.insert(m.id.clone()) {
+        }
+        // Borrowed, not copied: every solve checks them.
+        let mut ids = std::collections::HashSet::with_capacity(self.mates.len());
+        for m in &self.mates {
+            if !ids.insert(m.id.as_str()) {
                 return Err(AssemblyError::DuplicateMate(m.id.clone()));
             }
         }

@@ -58,6 +58,21 @@ impl Carried {
             return Self::default();
         }
         let entities = sys.entities();
+        // Most sketches have no carried entity at all: then nothing below is worth counting.
+        let carried_kind = |k: &EntityKind| {
+            matches!(
+                k,
+                EntityKind::PointNRotTrans { .. }
+                    | EntityKind::NormalNRot { .. }
+                    | EntityKind::PointNTrans { .. }
+            )
+        };
+        if !entities
+            .iter()
+            .any(|e| e.group == group && carried_kind(&e.kind))
+        {
+            return Self::default();
+        }
         let params = sys.params();
         // How many entities hold or read each parameter: an own parameter read by anything
         // else must stay an unknown.
@@ -106,21 +121,26 @@ impl Carried {
             if !carrier_ok {
                 continue;
             }
-            let own: Option<Vec<usize>> = e
-                .kind
-                .params()
-                .iter()
-                .map(|p| sys.param_index(*p))
-                .collect();
-            let Some(own) = own else { continue };
-            if !own
-                .iter()
-                .all(|&p| params[p].group == group && uses[p] == 1)
+            // At most four own parameters (a normal's quaternion): on the stack.
+            let mut own = [0usize; 4];
+            let ps = e.kind.params();
+            let mut found = ps.len() <= own.len();
+            for (o, p) in own.iter_mut().zip(ps) {
+                match sys.param_index(*p) {
+                    Some(i) => *o = i,
+                    None => found = false,
+                }
+            }
+            let own = &own[..ps.len().min(4)];
+            if !found
+                || !own
+                    .iter()
+                    .all(|&p| params[p].group == group && uses[p] == 1)
             {
                 continue;
             }
             out.entity[i] = true;
-            for p in own {
+            for &p in own {
                 out.param[p] = true;
             }
             out.list.push(i);
@@ -173,24 +193,19 @@ impl Carried {
                 x: &x[..],
                 k: &l.consts,
             };
-            let own: Vec<usize> = e
-                .kind
-                .params()
-                .iter()
-                .filter_map(|p| sys.param_index(*p))
-                .collect();
-            let v: Vec<f64> = match ent {
+            let (v, n) = match ent {
                 Ent::Point(p) => {
                     let p = g.pos(&p);
-                    vec![p.x, p.y, p.z]
+                    ([p.x, p.y, p.z, 0.0], 3)
                 }
                 Ent::Normal(n) => {
                     let q = g.normal(&n);
-                    vec![q.w, q.x, q.y, q.z]
+                    ([q.w, q.x, q.y, q.z], 4)
                 }
                 _ => continue,
             };
-            for (p, v) in own.into_iter().zip(v) {
+            let own = e.kind.params().iter().filter_map(|p| sys.param_index(*p));
+            for (p, &v) in own.zip(&v[..n]) {
                 values[p] = v;
             }
         }

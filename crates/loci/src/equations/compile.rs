@@ -72,31 +72,40 @@ pub(crate) fn compile_group(
         .collect();
     let duplicates = drop_duplicates(&mut mine);
     // Constraints compile independently; large groups in chunks on all cores, joined in order.
-    const CHUNK: usize = 1024;
-    let chunks: Vec<&[&Constraint]> = mine.chunks(CHUNK).collect();
-    let parts = crate::par::map_items(
-        chunks,
-        mine.len() >= crate::par::MIN_PARALLEL,
-        Vec::new,
-        |x, _, chunk| -> Result<Compiled, ModelError> {
-            let mut part = Compiled::default();
-            part.links.reserve(chunk.len());
-            for c in chunk {
-                compile_constraint(&r, c, values, x, &mut part)?;
-            }
-            Ok(part)
-        },
-    );
-    let parts = parts.into_iter().collect::<Result<Vec<_>, _>>()?;
+    // A small group compiles straight into the result, in the same order: the chunks, their
+    // parts and the copies that join them cost a small solve more than its compilation.
     let mut out = Compiled::default();
-    out.kernels
-        .reserve(parts.iter().map(|p| p.kernels.len()).sum());
-    out.links.reserve(parts.iter().map(|p| p.links.len()).sum());
-    for mut part in parts {
-        out.kernels.append(&mut part.kernels);
-        out.links.append(&mut part.links);
-    }
     let mut x = Vec::new();
+    if mine.len() < crate::par::MIN_PARALLEL {
+        out.links.reserve(mine.len());
+        for c in &mine {
+            compile_constraint(&r, c, values, &mut x, &mut out)?;
+        }
+    } else {
+        const CHUNK: usize = 1024;
+        let chunks: Vec<&[&Constraint]> = mine.chunks(CHUNK).collect();
+        let parts = crate::par::map_items(
+            chunks,
+            true,
+            Vec::new,
+            |x, _, chunk| -> Result<Compiled, ModelError> {
+                let mut part = Compiled::default();
+                part.links.reserve(chunk.len());
+                for c in chunk {
+                    compile_constraint(&r, c, values, x, &mut part)?;
+                }
+                Ok(part)
+            },
+        );
+        let parts = parts.into_iter().collect::<Result<Vec<_>, _>>()?;
+        out.kernels
+            .reserve(parts.iter().map(|p| p.kernels.len()).sum());
+        out.links.reserve(parts.iter().map(|p| p.links.len()).sum());
+        for mut part in parts {
+            out.kernels.append(&mut part.kernels);
+            out.links.append(&mut part.links);
+        }
+    }
     let mut kernels = Vec::new();
     compile_entities(&r, group, values, &mut x, &mut kernels)?;
     out.kernels.append(&mut kernels);

@@ -48,10 +48,39 @@ impl Key {
     }
 }
 
+impl Key {
+    /// A hash of every field, one step per field: equal keys have equal signatures.
+    fn signature(&self) -> u64 {
+        let id = |e: Option<EntityId>| e.map_or(0, |e| u64::from(e.0) + 1);
+        let mut h = 0u64;
+        let mut add = |x: u64| {
+            h = (h.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+        };
+        add(self.kind as u64);
+        add(id(self.workplane));
+        self.pts.iter().for_each(|&p| add(id(p)));
+        self.ents.iter().for_each(|&e| add(id(e)));
+        add(self.val);
+        add(u64::from(self.other) | (u64::from(self.other2) << 1));
+        h
+    }
+}
+
 /// Each constraint of `cs` that repeats an earlier one, with the earlier one:
 /// `(position of the copy, handle of the first)`, in order.
 pub(crate) fn duplicates(cs: &[&Constraint]) -> Vec<(usize, ConstraintId)> {
-    let mut first: FxHashMap<Key, ConstraintId> = FxHashMap::default();
+    // Copies have equal keys, so equal signatures: when no two signatures are equal (nearly
+    // every sketch), there is no copy, found without the table, whose keys cost a small
+    // sketch as much as the rest of its compilation.
+    let mut sigs: Vec<u64> = cs.iter().map(|c| Key::of(c).signature()).collect();
+    sigs.sort_unstable();
+    if sigs.windows(2).all(|w| w[0] != w[1]) {
+        return Vec::new();
+    }
+    // Sized for every constraint at once: growing the table rehashes every key so far, which
+    // cost a small sketch as much as the rest of its compilation.
+    let mut first: FxHashMap<Key, ConstraintId> =
+        FxHashMap::with_capacity_and_hasher(cs.len(), rustc_hash::FxBuildHasher);
     let mut out = Vec::new();
     for (i, c) in cs.iter().enumerate() {
         match first.entry(Key::of(c)) {
@@ -99,4 +128,57 @@ pub(crate) fn duplicate_groups(
         out[at].1.push(mine[i].h);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{ConstraintKind as K, GroupId};
+
+    fn c(h: u32, kind: K, pts: [u32; 2], ents: [u32; 2], val: f64) -> Constraint {
+        let id = |x: u32| (x != 0).then_some(EntityId(x));
+        let mut c = Constraint::new(h, 2, kind);
+        c.pt_a = id(pts[0]);
+        c.pt_b = id(pts[1]);
+        c.entity_a = id(ents[0]);
+        c.entity_b = id(ents[1]);
+        c.val = val;
+        c.group = GroupId(2);
+        c
+    }
+
+    #[test]
+    fn copies_are_named_with_the_first_of_their_kind() {
+        let cs = [
+            c(1, K::PtPtDistance, [5, 6], [0, 0], 10.0),
+            c(2, K::Horizontal, [0, 0], [20, 0], 0.0),
+            c(3, K::PtPtDistance, [6, 5], [0, 0], 10.0),
+            c(4, K::PtPtDistance, [5, 6], [0, 0], 11.0),
+            c(5, K::Parallel, [0, 0], [21, 20], 0.0),
+            c(6, K::Horizontal, [0, 0], [20, 0], 0.0),
+            c(7, K::Parallel, [0, 0], [20, 21], 0.0),
+            c(8, K::PtPtDistance, [5, 6], [0, 0], -0.0),
+            c(9, K::PtPtDistance, [5, 6], [0, 0], 0.0),
+            c(10, K::Horizontal, [0, 0], [20, 0], 0.0),
+            c(11, K::PtPtDistance, [5, 6], [0, 0], 10.0),
+        ];
+        let refs: Vec<&Constraint> = cs.iter().collect();
+        let got = duplicates(&refs);
+        let first = |h| ConstraintId(h);
+        assert_eq!(
+            got,
+            vec![
+                (2, first(1)),
+                (5, first(2)),
+                (6, first(5)),
+                (8, first(8)),
+                (9, first(2)),
+                (10, first(1)),
+            ]
+        );
+        let distinct: Vec<&Constraint> = [0, 1, 3, 4].iter().map(|&i| &cs[i]).collect();
+        assert!(duplicates(&distinct).is_empty());
+        assert!(duplicates(&[]).is_empty());
+        assert!(duplicates(&refs[..1]).is_empty());
+    }
 }

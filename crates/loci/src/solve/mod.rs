@@ -111,13 +111,14 @@ fn constructed(
 /// A solve of a group that nothing belongs to is a mistake (a wrong number, an empty file),
 /// not a sketch with nothing to do: say so, with the groups there are.
 pub(crate) fn check_group(sys: &System, group: GroupId) -> Result<(), SolveError> {
-    let groups = sys.groups();
-    if groups.binary_search(&group).is_ok() {
+    // The sorted list of groups is only built for the error: most solves name a group that
+    // has objects, and sorting every object's group was a visible part of a small solve.
+    if sys.has_group(group) {
         return Ok(());
     }
     Err(SolveError::UnknownGroup {
         group,
-        existing: groups,
+        existing: sys.groups(),
     })
 }
 
@@ -336,15 +337,14 @@ fn solve_values(
     };
     let kernels = &cache.kernels;
     // Starting value of each merged set: the mean of its dragged members if any, else of all.
-    let mut sum = vec![0.0f64; np];
-    let mut count = vec![0u32; np];
+    let mut sum = vec![(0.0f64, 0u32); np];
     for p in 0..np {
         let r = plan.root_of[p];
         if r == usize::MAX || (plan.root_dragged[r] && !plan.dragged[p]) {
             continue;
         }
-        sum[r] += values[p];
-        count[r] += 1;
+        sum[r].0 += values[p];
+        sum[r].1 += 1;
     }
     // Fixed sets start at their value and are constants of the solve.
     let mut start = vec![0.0; np];
@@ -355,7 +355,7 @@ fn solve_values(
         }
         start[p] = match sub.fixed_value(p) {
             Some(v) => v,
-            None => sum[r] / f64::from(count[r]),
+            None => sum[r].0 / f64::from(sum[r].1),
         };
         // Constants take their (merged or fixed) starting values.
         values[p] = start[p];

@@ -59,28 +59,15 @@ pub(crate) struct Finish {
 /// Work vectors reused across components, so that many small components cost no allocations.
 #[derive(Default)]
 pub(crate) struct Scratch {
-    r: Vec<f64>,
-    jn: Vec<f64>,
-    inv: Vec<f64>,
-    y: Vec<f64>,
-    dx: Vec<f64>,
-    xt: Vec<f64>,
-    rt: Vec<f64>,
+    /// Every work vector of fixed length, one after another in one allocation (see
+    /// [`Component::solve`]): the residuals, the Jacobian, the row norms, the steps, the
+    /// starting point's copies. A small solve allocated each on its own, which cost more than
+    /// its arithmetic (in WebAssembly above all).
+    fixed: Vec<f64>,
     xs: Vec<f64>,
     jl: Vec<f64>,
     /// The starting point, for [`Component::project`].
     x0: Vec<f64>,
-    /// The first solution a sliding solve reached, and its residuals: the answer if the slide
-    /// towards the nearest one fails.
-    keep: Vec<f64>,
-    r_keep: Vec<f64>,
-    /// The movement towards the starting point, in scaled unknowns.
-    dz: Vec<f64>,
-    /// A step's right-hand side, the residual of its refinement, and `Jnᵀ y`: for steps
-    /// solved with the factorisation of an earlier iteration.
-    b: Vec<f64>,
-    res: Vec<f64>,
-    v: Vec<f64>,
 }
 
 /// How many past merits the line search compares a step with.
@@ -222,20 +209,23 @@ impl Component {
         for c in 0..ncols {
             counts[c + 1] += counts[c];
         }
-        let mut fill = counts.clone();
+        // Filled through `counts` itself (each column's start moves up to the next one's as
+        // its entries go in), then shifted back: one table less to allocate.
         let mut entries = vec![(0u32, 0u32); jv];
         for b in &blocks {
             let rows = kernels[b.kernel].rows;
             let cols = &block_cols[b.cols0 as usize..(b.cols0 + b.ncols) as usize];
             for r in 0..rows {
                 for (ci, &c) in cols.iter().enumerate() {
-                    let f = &mut fill[c as usize];
+                    let f = &mut counts[c as usize];
                     entries[*f as usize] =
                         ((b.row0 + r) as u32, (b.jv0 + r * cols.len() + ci) as u32);
                     *f += 1;
                 }
             }
         }
+        counts.copy_within(0..ncols, 1);
+        counts[0] = 0;
         Self {
             blocks,
             rows: row,
@@ -586,66 +576,40 @@ impl Component {
             self.gram = Gram::new(m, &self.columns);
         }
         let mut gram_slot = self.gram.take();
-        let Scratch {
-            r,
-            jn,
-            inv,
-            y,
-            dx,
-            xt,
-            rt,
-            xs,
-            jl,
-            x0,
-            keep,
-            r_keep,
-            dz,
-            b,
-            res,
-            v,
-        } = scratch;
+        let Scratch { fixed, xs, jl, x0 } = scratch;
         if cfg.nearest {
             x0.clear();
             x0.extend_from_slice(x);
         }
-        // Every entry is written before it is read, so vectors of the right length from an
-        // earlier solve are used as they are.
-        for (v, n) in [
-            (&mut *r, m),
-            (&mut *jn, self.nnz),
-            (&mut *inv, m),
-            (&mut *y, m),
-            (&mut *dx, ncols),
-            (&mut *xt, ncols),
-            (&mut *rt, m),
-            (&mut *keep, ncols),
-            (&mut *r_keep, m),
-            (&mut *dz, ncols),
-            (&mut *b, m),
-            (&mut *res, m),
-            (&mut *v, ncols),
-        ] {
-            if v.len() != n {
-                v.clear();
-                v.resize(n, 0.0);
-            }
+        // The work vectors: residuals `r`, Jacobian `jn`, row norms `inv`, `y`, the step `dx`,
+        // the trial point `xt` and its residuals `rt`; the first solution a sliding solve
+        // reached (`keep`) and its residuals (`r_keep`), the answer if the slide towards the
+        // nearest one fails; the movement towards the starting point in scaled unknowns (`dz`);
+        // a step's right-hand side (`b`), the residual of its refinement (`res`) and `Jnᵀ y`
+        // (`v`), for steps solved with the factorisation of an earlier iteration. Cleared, so
+        // that nothing of an earlier component's solve can reach this one's.
+        let total = 7 * m + self.nnz + 5 * ncols;
+        if fixed.len() < total {
+            fixed.resize(total, 0.0);
         }
+        let rest = &mut fixed[..total];
+        rest.fill(0.0);
+        let (r, rest) = rest.split_at_mut(m);
+        let (jn, rest) = rest.split_at_mut(self.nnz);
+        let (inv, rest) = rest.split_at_mut(m);
+        let (y, rest) = rest.split_at_mut(m);
+        let (dx, rest) = rest.split_at_mut(ncols);
+        let (xt, rest) = rest.split_at_mut(ncols);
+        let (rt, rest) = rest.split_at_mut(m);
+        let (keep, rest) = rest.split_at_mut(ncols);
+        let (r_keep, rest) = rest.split_at_mut(m);
+        let (dz, rest) = rest.split_at_mut(ncols);
+        let (b, rest) = rest.split_at_mut(m);
+        let (res, rest) = rest.split_at_mut(m);
+        let (v, _) = rest.split_at_mut(ncols);
         self.gather_all(kernels, x, values, xs);
         let xs = &mut xs[..];
-        let (r, jn, inv, y, dx, xt, rt, keep, r_keep, dz) = (
-            &mut r[..],
-            &mut jn[..],
-            &mut inv[..],
-            &mut y[..],
-            &mut dx[..],
-            &mut xt[..],
-            &mut rt[..],
-            &mut keep[..],
-            &mut r_keep[..],
-            &mut dz[..],
-        );
         let x0 = &x0[..];
-        let (b, res, v) = (&mut b[..], &mut res[..], &mut v[..]);
         let mut iterations = 0;
         let mut converged = false;
         let mut factored = false;

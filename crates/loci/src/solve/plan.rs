@@ -232,12 +232,15 @@ impl Groups {
             for i in 0..n {
                 ptr[i + 1] += ptr[i];
             }
-            let mut fill = ptr.clone();
+            // Filled through `ptr` itself (each start moves up to the next one's), then
+            // shifted back: one table less to allocate.
             let mut items = vec![0usize; ptr[n]];
             for (i, &c) in of.iter().enumerate().filter(|x| *x.1 != u32::MAX) {
-                items[fill[c as usize]] = i;
-                fill[c as usize] += 1;
+                items[ptr[c as usize]] = i;
+                ptr[c as usize] += 1;
             }
+            ptr.copy_within(0..n, 1);
+            ptr[0] = 0;
             (ptr, items)
         };
         let (col_ptr, cols) = bucket(col_comp);

@@ -118,6 +118,10 @@ pub(crate) fn dependencies(
     dropped: &[usize],
     m: usize,
 ) -> Vec<Vec<usize>> {
+    // Most solves drop nothing: no pass over the Jacobian to list nobody's entries.
+    if dropped.is_empty() {
+        return Vec::new();
+    }
     let entries = row_entries(columns, dropped, m);
     if dropped.len() > DEPENDENCY_BLOCK {
         return vec![dependent_union(gram, columns, jn, &entries, dropped, m)];
