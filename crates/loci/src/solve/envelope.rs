@@ -49,6 +49,11 @@ impl EnvelopeLdlt {
         self.a.len()
     }
 
+    /// The first column row `i` covers.
+    pub fn first(&self, i: usize) -> usize {
+        self.first[i] as usize
+    }
+
     /// Position of entry (i, j), `first[i] <= j <= i`, in [`Self::values_mut`].
     pub fn index(&self, i: usize, j: usize) -> usize {
         self.ptr[i] + j - self.first[i] as usize
