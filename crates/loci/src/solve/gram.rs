@@ -257,9 +257,7 @@ impl Gram {
         // needed. Small components are factorised within their envelope whatever its shape.
         let first = envelope(nrows, columns, None);
         if nrows <= DENSE_MAX || envelope_len(&first) <= 2 * pairs {
-            return Some(Gram::Banded(Box::new(Banded::new(
-                first, pairs, columns, None,
-            ))));
+            return Some(Gram::Banded(Box::new(Banded::new(first, columns, None))));
         }
         // Equations in another order (implicit ones last, a chain given shuffled) may still
         // band once renumbered.
@@ -280,7 +278,6 @@ impl Gram {
         if envelope_len(&first) <= 2 * pairs {
             return Some(Gram::Banded(Box::new(Banded::new(
                 first,
-                pairs,
                 columns,
                 Some((order, pos)),
             ))));
@@ -292,7 +289,10 @@ impl Gram {
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
         match self {
-            Gram::Banded(b) => b.products.assemble(b.g.values_mut(), jv),
+            Gram::Banded(b) => {
+                b.jv.clear();
+                b.jv.extend_from_slice(jv);
+            }
             Gram::Sparse(s) => s.assemble(jv),
         }
     }
@@ -301,7 +301,7 @@ impl Gram {
     /// factorisation failed numerically.
     pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
         match self {
-            Gram::Banded(b) => b.g.factor(lambda, eps),
+            Gram::Banded(b) => b.factor(lambda, eps),
             Gram::Sparse(s) => s.factor(lambda, eps),
         }
     }
@@ -375,10 +375,21 @@ fn envelope_len(first: &[u32]) -> usize {
 }
 
 /// `G` factorised within its envelope, its rows possibly renumbered.
+///
+/// Neither `G` nor a list of the products that make it is stored: each factorisation computes
+/// the row of `G` it reaches from the rows of `J`, products summed in the order of `J`'s
+/// columns as [`Products`] sums them. A 10,000-link assembly chain's envelope holds millions of
+/// entries, and `G` and its products took 45 MB of fresh pages; `J`'s structure twice is 10.
 pub(crate) struct Banded {
     g: EnvelopeLdlt,
-    /// The products that make each entry of the envelope.
-    products: Products,
+    /// The Jacobian values of the last [`Gram::assemble`].
+    jv: Vec<f64>,
+    /// The rows of `J`: row `i` is `row_entries[row_ptr[i]..row_ptr[i + 1]]`, each
+    /// `(column, index into J's values)`, by column.
+    row_ptr: Vec<usize>,
+    row_entries: Vec<(u32, u32)>,
+    /// The columns of `J`.
+    columns: Columns,
     /// The row at each position and the position of each row, when renumbered.
     order: Option<(Vec<u32>, Vec<u32>)>,
     /// A right-hand side in position order.
@@ -386,15 +397,10 @@ pub(crate) struct Banded {
 }
 
 impl Banded {
-    fn new(
-        first: Vec<u32>,
-        pairs: usize,
-        columns: &Columns,
-        order: Option<(Vec<u32>, Vec<u32>)>,
-    ) -> Self {
+    fn new(first: Vec<u32>, columns: &Columns, order: Option<(Vec<u32>, Vec<u32>)>) -> Self {
         let n = first.len();
         let g = EnvelopeLdlt::new(first);
-        let products = Products::banded(&g, pairs, columns, order.as_ref());
+        let (row_ptr, row_entries) = rows_of(n, columns);
         let tmp = if order.is_some() {
             vec![0.0; n]
         } else {
@@ -402,10 +408,32 @@ impl Banded {
         };
         Self {
             g,
-            products,
+            jv: Vec::new(),
+            row_ptr,
+            row_entries,
+            columns: Columns {
+                ptr: columns.ptr.clone(),
+                entries: columns.entries.clone(),
+            },
             order,
             tmp,
         }
+    }
+
+    /// Factorises `G + lambda I` from the Jacobian values of the last [`Gram::assemble`].
+    fn factor(&mut self, lambda: f64, eps: f64) -> bool {
+        let Self {
+            g,
+            jv,
+            row_ptr,
+            row_entries,
+            columns,
+            order,
+            ..
+        } = self;
+        g.factor_rows(lambda, eps, |p, f, out| {
+            row_of_g(p, f, out, jv, row_ptr, row_entries, columns, order.as_ref())
+        })
     }
 
     fn dropped(&self) -> Vec<usize> {
@@ -435,6 +463,34 @@ impl Banded {
     }
 }
 
+/// The entries of row `p` (in position order) of `G` from column `f` to the diagonal, into
+/// `out`: the products of the row of `J` at `p` with each row at a position up to `p` sharing
+/// a column, each entry's summed in the order of the columns of `J`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn row_of_g(
+    p: usize,
+    f: usize,
+    out: &mut [f64],
+    jv: &[f64],
+    row_ptr: &[usize],
+    row_entries: &[(u32, u32)],
+    columns: &Columns,
+    order: Option<&(Vec<u32>, Vec<u32>)>,
+) {
+    out.fill(0.0);
+    let i = order.map_or(p, |o| o.0[p] as usize);
+    for &(c, a) in &row_entries[row_ptr[i]..row_ptr[i + 1]] {
+        let x = jv[a as usize];
+        for &(j, b) in columns.col(c as usize) {
+            let q = order.map_or(j, |o| o.1[j as usize]) as usize;
+            if q <= p {
+                out[q - f] += x * jv[b as usize];
+            }
+        }
+    }
+}
+
 /// The products of Jacobian entries that make `G`, grouped by the entry of `G` they add to:
 /// entry `e` is the sum of `jv[a] * jv[b]` over `pairs[ptr[e]..ptr[e + 1]]`. Every entry is
 /// written once, so none is cleared first, and entries can be computed in parallel runs.
@@ -448,69 +504,22 @@ struct Products {
 const PARALLEL_PRODUCTS: usize = 1 << 16;
 
 impl Products {
-    /// The products of the envelope `g` of `G`, `total` of them, with the rows of `J` at
-    /// positions `order` (position -> row, row -> position) or as they are. Row by row of the
-    /// envelope, whose entries are contiguous: each row's products are counted, then placed,
-    /// each entry's in the order of the columns of `J` they come from.
-    fn banded(
-        g: &EnvelopeLdlt,
-        total: usize,
-        columns: &Columns,
-        order: Option<&(Vec<u32>, Vec<u32>)>,
-    ) -> Self {
-        let n = g.rows();
-        let (row_ptr, row_entries) = rows_of(n, columns);
-        let at = |r: u32| order.map_or(r, |o| o.1[r as usize]) as usize;
-        let mut ptr = vec![0u32; g.values_len() + 1];
-        let mut pairs = vec![(0u32, 0u32); total];
-        // Per entry of the row being placed: its products, then where its next one goes.
-        let mut fill: Vec<u32> = Vec::new();
-        for p in 0..n {
-            let i = order.map_or(p, |o| o.0[p] as usize);
-            let f = g.first(p);
-            let base = g.index(p, f);
-            let entries = &row_entries[row_ptr[i]..row_ptr[i + 1]];
-            fill.clear();
-            fill.resize(p + 1 - f, 0);
-            for &(c, _) in entries {
-                for &(j, _) in columns.col(c as usize) {
-                    let q = at(j);
-                    if q <= p {
-                        fill[q - f] += 1;
-                    }
-                }
+    /// The entries `e0..e0 + v.len()` into `v`, from the Jacobian values `jv`.
+    #[inline]
+    fn fill(&self, v: &mut [f64], e0: usize, jv: &[f64]) {
+        for (k, x) in v.iter_mut().enumerate() {
+            let (s, t) = (self.ptr[e0 + k] as usize, self.ptr[e0 + k + 1] as usize);
+            let mut acc = 0.0;
+            for &(a, b) in &self.pairs[s..t] {
+                acc += jv[a as usize] * jv[b as usize];
             }
-            for (k, v) in fill.iter_mut().enumerate() {
-                let start = ptr[base + k];
-                ptr[base + k + 1] = start + *v;
-                *v = start;
-            }
-            for &(c, a) in entries {
-                for &(j, b) in columns.col(c as usize) {
-                    let q = at(j);
-                    if q <= p {
-                        let slot = &mut fill[q - f];
-                        pairs[*slot as usize] = (a, b);
-                        *slot += 1;
-                    }
-                }
-            }
+            *x = acc;
         }
-        Self { ptr, pairs }
     }
 
     /// `v[e]` for every entry, from the Jacobian values `jv`.
     fn assemble(&self, v: &mut [f64], jv: &[f64]) {
-        let run = |v: &mut [f64], e0: usize| {
-            for (k, x) in v.iter_mut().enumerate() {
-                let (s, t) = (self.ptr[e0 + k] as usize, self.ptr[e0 + k + 1] as usize);
-                let mut acc = 0.0;
-                for &(a, b) in &self.pairs[s..t] {
-                    acc += jv[a as usize] * jv[b as usize];
-                }
-                *x = acc;
-            }
-        };
+        let run = |v: &mut [f64], e0: usize| self.fill(v, e0, jv);
         #[cfg(feature = "parallel")]
         if self.pairs.len() >= PARALLEL_PRODUCTS {
             use rayon::prelude::*;
@@ -876,6 +885,22 @@ mod tests {
             let Gram::Banded(b) = &mut g else {
                 panic!("a chain bands")
             };
+            let mut entries = Vec::new();
+            for p in 0..m {
+                let f = b.g.first(p);
+                let mut row = vec![0.0; p + 1 - f];
+                row_of_g(
+                    p,
+                    f,
+                    &mut row,
+                    &b.jv,
+                    &b.row_ptr,
+                    &b.row_entries,
+                    &b.columns,
+                    b.order.as_ref(),
+                );
+                entries.extend(row);
+            }
             let pos: Vec<usize> = match &b.order {
                 Some((_, pos)) => pos.iter().map(|&p| p as usize).collect(),
                 None => (0..m).collect(),
@@ -888,7 +913,7 @@ mod tests {
                 for q in b.g.first(p)..=p {
                     let e = b.g.index(p, q);
                     let want = reference(&rows, row_at[p], row_at[q]);
-                    assert_eq!(b.g.values_mut()[e].to_bits(), want.to_bits(), "({p}, {q})");
+                    assert_eq!(entries[e].to_bits(), want.to_bits(), "({p}, {q})");
                 }
                 // Nothing outside the envelope.
                 for q in 0..b.g.first(p) {
@@ -978,7 +1003,9 @@ mod timing {
             let t = Instant::now();
             let _ = Pattern::new(m, &columns);
             let t_pat = t.elapsed();
-            eprintln!("n={n}: adjacency {t_adj:?} rcm {t_rcm:?} envelope {t_env:?} pattern {t_pat:?}");
+            eprintln!(
+                "n={n}: adjacency {t_adj:?} rcm {t_rcm:?} envelope {t_env:?} pattern {t_pat:?}"
+            );
             for thr in [1.0, 0.5, 0.25, 0.1, 0.0] {
                 let pattern = Pattern::new(m, &columns);
                 let t = Instant::now();
@@ -991,7 +1018,10 @@ mod timing {
                     assert!(g.factor(0.0, 1e-10));
                     best = best.min(t.elapsed());
                 }
-                eprintln!("  thr {thr}: symbolic {t_sym:?} factor {best:?} supernodal {}", g.is_supernodal());
+                eprintln!(
+                    "  thr {thr}: symbolic {t_sym:?} factor {best:?} supernodal {}",
+                    g.is_supernodal()
+                );
             }
         }
     }
@@ -1092,5 +1122,4 @@ mod tests_support {
         }
         (rows.len(), Columns::from_lists(&lists), rows)
     }
-
 }
