@@ -221,8 +221,10 @@ pub(crate) enum Gram {
     Sparse(Box<SparseGram>),
 }
 
-/// The most products of two Jacobian entries a component's `G` may be built from (12 bytes
-/// each, and G's entries besides): beyond it the normal equations would take gigabytes.
+/// The most products of two Jacobian entries a component's `G` may be built from (a sparse
+/// `G` keeps a list of them, 8 bytes each, and its entries and factor besides; a banded one
+/// computes them at each factorisation): beyond it the normal equations would take gigabytes
+/// or far too long.
 pub(crate) const MAX_PRODUCTS: usize = 1 << 26;
 
 impl Gram {
