@@ -16,8 +16,6 @@ pub(crate) struct EnvelopeLdlt {
     first: Vec<u32>,
     /// Row `i` is stored at `ptr[i]..ptr[i + 1]`, its diagonal last.
     ptr: Vec<usize>,
-    /// `G`, row by row within the envelope.
-    a: Vec<f64>,
     /// The unit lower factor below the diagonal, `D` on it.
     l: Vec<f64>,
     /// `1 / D`, and 0 for a dropped row: its column of `L` and its part of the solution
@@ -27,6 +25,9 @@ pub(crate) struct EnvelopeLdlt {
 
 impl EnvelopeLdlt {
     /// The envelope of rows whose first nonzero columns are `first` (each at most its row).
+    /// `G` itself is not stored: [`Self::factor_rows`] is given it row by row as it
+    /// factorises. A long chain's envelope holds millions of entries, and a copy of them all
+    /// is as many fresh pages.
     pub fn new(first: Vec<u32>) -> Self {
         let n = first.len();
         let mut ptr = Vec::with_capacity(n + 1);
@@ -38,29 +39,49 @@ impl EnvelopeLdlt {
         Self {
             first,
             ptr,
-            a: vec![0.0; len],
             l: vec![0.0; len],
             dinv: vec![0.0; n],
         }
     }
 
-    /// The number of stored entries (the envelope's size), those of [`Self::values_mut`].
+    /// The number of entries in the envelope (its size).
+    #[cfg(test)]
     pub fn values_len(&self) -> usize {
-        self.a.len()
+        self.l.len()
     }
 
-    /// Position of entry (i, j), `first[i] <= j <= i`, in [`Self::values_mut`].
+    /// The first column row `i` covers.
+    #[cfg(test)]
+    pub fn first(&self, i: usize) -> usize {
+        self.first[i] as usize
+    }
+
+    /// Position of entry (i, j), `first[i] <= j <= i`, in an envelope-sized array.
+    #[cfg(test)]
     pub fn index(&self, i: usize, j: usize) -> usize {
         self.ptr[i] + j - self.first[i] as usize
     }
 
-    pub fn values_mut(&mut self) -> &mut [f64] {
-        &mut self.a
+    /// Factorises `G + lambda I` with `G` given within the envelope, row by row (entries
+    /// at [`Self::index`]); pivots at or below `eps` are dropped.
+    #[cfg(test)]
+    pub fn factor(&mut self, a: &[f64], lambda: f64, eps: f64) -> bool {
+        let ptr = self.ptr.clone();
+        self.factor_rows(lambda, eps, |i, _, row| {
+            row.copy_from_slice(&a[ptr[i]..ptr[i + 1]]);
+        })
     }
 
-    /// Factorises `G + lambda I`; pivots at or below `eps` are dropped. Returns false when a
-    /// pivot is not finite.
-    pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
+    /// Factorises `G + lambda I`, with `G` given row by row as the factorisation reaches it:
+    /// `row_of_g(i, f, out)` writes the entries of row `i` from column `f` (its first) to the
+    /// diagonal into `out`. Pivots at or below `eps` are dropped. Returns false when a pivot
+    /// is not finite.
+    pub fn factor_rows(
+        &mut self,
+        lambda: f64,
+        eps: f64,
+        mut row_of_g: impl FnMut(usize, usize, &mut [f64]),
+    ) -> bool {
         let n = self.first.len();
         for i in 0..n {
             let fi = self.first[i] as usize;
@@ -68,7 +89,7 @@ impl EnvelopeLdlt {
             let w = end - start - 1;
             let (done, rest) = self.l.split_at_mut(start);
             let row = &mut rest[..=w];
-            row.copy_from_slice(&self.a[start..end]);
+            row_of_g(i, fi, row);
             // First (L D)[i][k] = G[i][k] - sum over m < k of (L D)[i][m] L[k][m], in place.
             for (t, (&fk, &pk)) in self.first[fi..i].iter().zip(&self.ptr[fi..i]).enumerate() {
                 // Columns both rows cover: from max(fi, fk) to k - 1, with k = fi + t.
@@ -162,14 +183,15 @@ mod tests {
             .collect();
         let mut e = EnvelopeLdlt::new(first.clone());
         let mut d = DenseLdlt::new(m);
+        let mut a = vec![0.0; e.values_len()];
         for i in 0..m {
             for k in first[i] as usize..=i {
                 let (ie, id) = (e.index(i, k), d.index(i, k));
-                e.values_mut()[ie] = dot(i, k);
+                a[ie] = dot(i, k);
                 d.values_mut()[id] = dot(i, k);
             }
         }
-        assert!(e.factor(lambda, 1e-10));
+        assert!(e.factor(&a, lambda, 1e-10));
         assert!(d.factor(lambda, 1e-10));
         (e, d)
     }
@@ -201,8 +223,7 @@ mod tests {
         assert_eq!(ye[4], 0.0);
         // Each row from its first nonzero to the diagonal: 1 + 2 + 2 + 2 + 4 + 3 entries.
         assert_eq!(e.values_len(), 14);
-        e.values_mut().iter_mut().for_each(|v| *v = f64::NAN);
-        assert!(!e.factor(0.0, 1e-10));
+        assert!(!e.factor(&vec![f64::NAN; 14], 0.0, 1e-10));
     }
 
     #[test]

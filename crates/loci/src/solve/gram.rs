@@ -64,64 +64,80 @@ impl Columns {
     }
 }
 
-/// The structure of `G = J Jᵀ`: an upper-triangular CSC pattern, and for every product of two
-/// Jacobian entries the entry of `G` it adds to.
+/// The structure of `G = J Jᵀ`: an upper-triangular CSC pattern, and the products of two
+/// Jacobian entries that make each of its entries.
 struct Pattern {
     col_ptr: Vec<usize>,
     row_idx: Vec<usize>,
-    /// `(entry of G, entry of J, entry of J)`: `G[e] += J[a] * J[b]`.
-    contrib: Vec<(u32, u32, u32)>,
+    products: Products,
 }
 
 impl Pattern {
     /// From the nonzeros of `J`, given column by column as `(row, index into J's values)`.
+    ///
+    /// Column `i` of the upper triangle of `G` holds the rows `j <= i` that share a column of
+    /// `J` with row `i`, and all of its products come from row `i`'s entries: each column is
+    /// built on its own, its products counted and then placed, into arrays sized beforehand
+    /// (a 200x200 truss makes 800,000 products; growing lists of them cost more in copying
+    /// and fresh pages than the arithmetic did).
     fn new(nrows: usize, columns: &Columns) -> Self {
         let (row_ptr, row_entries) = rows_of(nrows, columns);
-        // Column i of the upper triangle of G holds the rows j <= i that share a column of J
-        // with row i; the diagonal (j = i) comes last. A marker array avoids sorting G.
-        let mut col_ptr = vec![0usize; nrows + 1];
-        let mut row_idx: Vec<usize> = Vec::new();
-        let mut contrib = Vec::new();
-        let mut slot_of = vec![usize::MAX; nrows];
-        let mut touched: Vec<usize> = Vec::new();
-        let mut pending: Vec<(u32, u32, u32)> = Vec::new(); // (row j, a, b)
+        let total = Gram::products(columns);
+        // Per row j of the column being built: its products so far (0: not met yet), then
+        // where its next product goes.
+        let mut count = vec![0u32; nrows];
+        let mut at = vec![0u32; nrows];
+        let mut touched: Vec<u32> = Vec::new();
+        let mut col_ptr = Vec::with_capacity(nrows + 1);
+        col_ptr.push(0usize);
+        // At most one entry per product, and a diagonal for each empty row besides.
+        let mut row_idx: Vec<usize> = Vec::with_capacity(total.min(nrows * nrows) + nrows);
+        let mut ptr: Vec<u32> = Vec::with_capacity(total.min(nrows * nrows) + nrows + 1);
+        ptr.push(0);
+        let mut pairs = vec![(0u32, 0u32); total];
+        let mut next = 0u32;
         for i in 0..nrows {
+            let entries = &row_entries[row_ptr[i]..row_ptr[i + 1]];
             touched.clear();
-            pending.clear();
-            for &(c, b) in &row_entries[row_ptr[i]..row_ptr[i + 1]] {
-                for &(j, a) in columns.col(c as usize) {
+            for &(c, _) in entries {
+                for &(j, _) in columns.col(c as usize) {
                     if j as usize <= i {
-                        if slot_of[j as usize] == usize::MAX {
-                            slot_of[j as usize] = 0;
-                            touched.push(j as usize);
+                        if count[j as usize] == 0 {
+                            touched.push(j);
                         }
-                        pending.push((j, a, b));
+                        count[j as usize] += 1;
                     }
                 }
             }
             // An empty Jacobian row still gets its diagonal: a zero pivot, a dropped equation.
-            if slot_of[i] == usize::MAX {
-                slot_of[i] = 0;
-                touched.push(i);
+            if count[i] == 0 {
+                touched.push(i as u32);
             }
             touched.sort_unstable();
-            let start = row_idx.len();
-            for (k, &j) in touched.iter().enumerate() {
-                slot_of[j] = start + k;
-                row_idx.push(j);
-            }
-            for &(j, a, b) in &pending {
-                contrib.push((slot_of[j as usize] as u32, a, b));
-            }
             for &j in &touched {
-                slot_of[j] = usize::MAX;
+                row_idx.push(j as usize);
+                at[j as usize] = next;
+                next += count[j as usize];
+                ptr.push(next);
+                count[j as usize] = 0;
             }
-            col_ptr[i + 1] = row_idx.len();
+            // The products of each entry in the order of the columns of J they come from.
+            for &(c, b) in entries {
+                for &(j, a) in columns.col(c as usize) {
+                    if j as usize <= i {
+                        let f = &mut at[j as usize];
+                        pairs[*f as usize] = (a, b);
+                        *f += 1;
+                    }
+                }
+            }
+            col_ptr.push(row_idx.len());
         }
+        debug_assert_eq!(next as usize, total);
         Self {
             col_ptr,
             row_idx,
-            contrib,
+            products: Products { ptr, pairs },
         }
     }
 }
@@ -205,8 +221,10 @@ pub(crate) enum Gram {
     Sparse(Box<SparseGram>),
 }
 
-/// The most products of two Jacobian entries a component's `G` may be built from (12 bytes
-/// each, and G's entries besides): beyond it the normal equations would take gigabytes.
+/// The most products of two Jacobian entries a component's `G` may be built from (a sparse
+/// `G` keeps a list of them, 8 bytes each, and its entries and factor besides; a banded one
+/// computes them at each factorisation): beyond it the normal equations would take gigabytes
+/// or far too long.
 pub(crate) const MAX_PRODUCTS: usize = 1 << 26;
 
 impl Gram {
@@ -241,16 +259,19 @@ impl Gram {
         // needed. Small components are factorised within their envelope whatever its shape.
         let first = envelope(nrows, columns, None);
         if nrows <= DENSE_MAX || envelope_len(&first) <= 2 * pairs {
-            return Some(Gram::Banded(Box::new(Banded::new(
-                first, pairs, columns, None,
-            ))));
+            return Some(Gram::Banded(Box::new(Banded::new(first, columns, None))));
         }
         // Equations in another order (implicit ones last, a chain given shuffled) may still
         // band once renumbered.
-        let order = {
-            let (ptr, adj) = adjacency(nrows, columns);
-            order::reverse_cuthill_mckee(nrows, &ptr, &adj)
-        };
+        let (ptr, adj) = adjacency(nrows, columns);
+        // A two-dimensional mesh (a truss) never bands: its envelope in any such order is
+        // many times the size of G. Not worth ordering to find out (5-10 ms on a 100x100
+        // truss); the estimate errs low, and only twice the threshold skips the attempt.
+        if order::envelope_estimate(nrows, &ptr, &adj).is_some_and(|e| e > 4 * pairs) {
+            let pattern = Pattern::new(nrows, columns);
+            return SparseGram::new(nrows, pattern, sparse).map(|s| Gram::Sparse(Box::new(s)));
+        }
+        let order = order::reverse_cuthill_mckee(nrows, &ptr, &adj);
         let mut pos = vec![0u32; nrows];
         for (p, &r) in order.iter().enumerate() {
             pos[r as usize] = p as u32;
@@ -259,7 +280,6 @@ impl Gram {
         if envelope_len(&first) <= 2 * pairs {
             return Some(Gram::Banded(Box::new(Banded::new(
                 first,
-                pairs,
                 columns,
                 Some((order, pos)),
             ))));
@@ -271,7 +291,10 @@ impl Gram {
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
         match self {
-            Gram::Banded(b) => b.products.assemble(b.g.values_mut(), jv),
+            Gram::Banded(b) => {
+                b.jv.clear();
+                b.jv.extend_from_slice(jv);
+            }
             Gram::Sparse(s) => s.assemble(jv),
         }
     }
@@ -280,7 +303,7 @@ impl Gram {
     /// factorisation failed numerically.
     pub fn factor(&mut self, lambda: f64, eps: f64) -> bool {
         match self {
-            Gram::Banded(b) => b.g.factor(lambda, eps),
+            Gram::Banded(b) => b.factor(lambda, eps),
             Gram::Sparse(s) => s.factor(lambda, eps),
         }
     }
@@ -354,10 +377,21 @@ fn envelope_len(first: &[u32]) -> usize {
 }
 
 /// `G` factorised within its envelope, its rows possibly renumbered.
+///
+/// Neither `G` nor a list of the products that make it is stored: each factorisation computes
+/// the row of `G` it reaches from the rows of `J`, products summed in the order of `J`'s
+/// columns as [`Products`] sums them. A 10,000-link assembly chain's envelope holds millions of
+/// entries, and `G` and its products took 45 MB of fresh pages; `J`'s structure twice is 10.
 pub(crate) struct Banded {
     g: EnvelopeLdlt,
-    /// The products that make each entry of the envelope.
-    products: Products,
+    /// The Jacobian values of the last [`Gram::assemble`].
+    jv: Vec<f64>,
+    /// The rows of `J`: row `i` is `row_entries[row_ptr[i]..row_ptr[i + 1]]`, each
+    /// `(column, index into J's values)`, by column.
+    row_ptr: Vec<usize>,
+    row_entries: Vec<(u32, u32)>,
+    /// The columns of `J`.
+    columns: Columns,
     /// The row at each position and the position of each row, when renumbered.
     order: Option<(Vec<u32>, Vec<u32>)>,
     /// A right-hand side in position order.
@@ -365,40 +399,43 @@ pub(crate) struct Banded {
 }
 
 impl Banded {
-    fn new(
-        first: Vec<u32>,
-        pairs: usize,
-        columns: &Columns,
-        order: Option<(Vec<u32>, Vec<u32>)>,
-    ) -> Self {
+    fn new(first: Vec<u32>, columns: &Columns, order: Option<(Vec<u32>, Vec<u32>)>) -> Self {
         let n = first.len();
         let g = EnvelopeLdlt::new(first);
-        let pos = order.as_ref().map(|o| &o.1);
-        let at = |r: u32| pos.map_or(r, |p| p[r as usize]) as usize;
-        let mut contrib = Vec::with_capacity(pairs);
-        for col in columns.iter() {
-            for &(i, a) in col {
-                let pi = at(i);
-                for &(j, b) in col {
-                    let pj = at(j);
-                    if pj <= pi {
-                        contrib.push((g.index(pi, pj) as u32, a, b));
-                    }
-                }
-            }
-        }
+        let (row_ptr, row_entries) = rows_of(n, columns);
         let tmp = if order.is_some() {
             vec![0.0; n]
         } else {
             Vec::new()
         };
-        let products = Products::new(g.values_len(), &contrib);
         Self {
             g,
-            products,
+            jv: Vec::new(),
+            row_ptr,
+            row_entries,
+            columns: Columns {
+                ptr: columns.ptr.clone(),
+                entries: columns.entries.clone(),
+            },
             order,
             tmp,
         }
+    }
+
+    /// Factorises `G + lambda I` from the Jacobian values of the last [`Gram::assemble`].
+    fn factor(&mut self, lambda: f64, eps: f64) -> bool {
+        let Self {
+            g,
+            jv,
+            row_ptr,
+            row_entries,
+            columns,
+            order,
+            ..
+        } = self;
+        g.factor_rows(lambda, eps, |p, f, out| {
+            row_of_g(p, f, out, jv, row_ptr, row_entries, columns, order.as_ref())
+        })
     }
 
     fn dropped(&self) -> Vec<usize> {
@@ -428,6 +465,34 @@ impl Banded {
     }
 }
 
+/// The entries of row `p` (in position order) of `G` from column `f` to the diagonal, into
+/// `out`: the products of the row of `J` at `p` with each row at a position up to `p` sharing
+/// a column, each entry's summed in the order of the columns of `J`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn row_of_g(
+    p: usize,
+    f: usize,
+    out: &mut [f64],
+    jv: &[f64],
+    row_ptr: &[usize],
+    row_entries: &[(u32, u32)],
+    columns: &Columns,
+    order: Option<&(Vec<u32>, Vec<u32>)>,
+) {
+    out.fill(0.0);
+    let i = order.map_or(p, |o| o.0[p] as usize);
+    for &(c, a) in &row_entries[row_ptr[i]..row_ptr[i + 1]] {
+        let x = jv[a as usize];
+        for &(j, b) in columns.col(c as usize) {
+            let q = order.map_or(j, |o| o.1[j as usize]) as usize;
+            if q <= p {
+                out[q - f] += x * jv[b as usize];
+            }
+        }
+    }
+}
+
 /// The products of Jacobian entries that make `G`, grouped by the entry of `G` they add to:
 /// entry `e` is the sum of `jv[a] * jv[b]` over `pairs[ptr[e]..ptr[e + 1]]`. Every entry is
 /// written once, so none is cleared first, and entries can be computed in parallel runs.
@@ -441,38 +506,22 @@ struct Products {
 const PARALLEL_PRODUCTS: usize = 1 << 16;
 
 impl Products {
-    /// From `(entry of G, entry of J, entry of J)` triples for a `G` of `len` entries; the
-    /// products of each entry keep their order, and so the sum its rounding.
-    fn new(len: usize, contrib: &[(u32, u32, u32)]) -> Self {
-        let mut ptr = vec![0u32; len + 1];
-        for &(e, _, _) in contrib {
-            ptr[e as usize + 1] += 1;
+    /// The entries `e0..e0 + v.len()` into `v`, from the Jacobian values `jv`.
+    #[inline]
+    fn fill(&self, v: &mut [f64], e0: usize, jv: &[f64]) {
+        for (k, x) in v.iter_mut().enumerate() {
+            let (s, t) = (self.ptr[e0 + k] as usize, self.ptr[e0 + k + 1] as usize);
+            let mut acc = 0.0;
+            for &(a, b) in &self.pairs[s..t] {
+                acc += jv[a as usize] * jv[b as usize];
+            }
+            *x = acc;
         }
-        for e in 0..len {
-            ptr[e + 1] += ptr[e];
-        }
-        let mut fill = ptr.clone();
-        let mut pairs = vec![(0u32, 0u32); contrib.len()];
-        for &(e, a, b) in contrib {
-            let f = &mut fill[e as usize];
-            pairs[*f as usize] = (a, b);
-            *f += 1;
-        }
-        Self { ptr, pairs }
     }
 
     /// `v[e]` for every entry, from the Jacobian values `jv`.
     fn assemble(&self, v: &mut [f64], jv: &[f64]) {
-        let run = |v: &mut [f64], e0: usize| {
-            for (k, x) in v.iter_mut().enumerate() {
-                let (s, t) = (self.ptr[e0 + k] as usize, self.ptr[e0 + k + 1] as usize);
-                let mut acc = 0.0;
-                for &(a, b) in &self.pairs[s..t] {
-                    acc += jv[a as usize] * jv[b as usize];
-                }
-                *x = acc;
-            }
-        };
+        let run = |v: &mut [f64], e0: usize| self.fill(v, e0, jv);
         #[cfg(feature = "parallel")]
         if self.pairs.len() >= PARALLEL_PRODUCTS {
             use rayon::prelude::*;
@@ -485,6 +534,12 @@ impl Products {
         run(v, 0);
     }
 }
+
+/// When the automatic choice takes dense blocks of columns: at half faer's own threshold on
+/// the predicted flops per entry of the factor. A 100x100 truss factorised in 9 ms in blocks
+/// and 13-19 ms column by column, which faer's own threshold would have chosen; a 50x50 one
+/// costs about the same either way.
+const SUPERNODAL_THRESHOLD: SupernodalThreshold = SupernodalThreshold(0.5);
 
 /// `G = J Jᵀ` for one component, with its sparse factorisation.
 pub(crate) struct SparseGram {
@@ -504,10 +559,22 @@ pub(crate) struct SparseGram {
 
 impl SparseGram {
     fn new(nrows: usize, pattern: Pattern, sparse: Sparse) -> Option<Self> {
+        Self::new_with(
+            nrows,
+            pattern,
+            match sparse {
+                Sparse::Auto => SUPERNODAL_THRESHOLD,
+                Sparse::Simplicial => SupernodalThreshold::FORCE_SIMPLICIAL,
+                Sparse::Supernodal => SupernodalThreshold::FORCE_SUPERNODAL,
+            },
+        )
+    }
+
+    fn new_with(nrows: usize, pattern: Pattern, threshold: SupernodalThreshold) -> Option<Self> {
         let Pattern {
             col_ptr,
             row_idx,
-            contrib,
+            products,
         } = pattern;
         let nnz = row_idx.len();
         let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();
@@ -517,11 +584,7 @@ impl SparseGram {
             Side::Upper,
             SymmetricOrdering::Amd,
             CholeskySymbolicParams {
-                supernodal_flop_ratio_threshold: match sparse {
-                    Sparse::Auto => SupernodalThreshold::AUTO,
-                    Sparse::Simplicial => SupernodalThreshold::FORCE_SIMPLICIAL,
-                    Sparse::Supernodal => SupernodalThreshold::FORCE_SUPERNODAL,
-                },
+                supernodal_flop_ratio_threshold: threshold,
                 ..Default::default()
             },
         )
@@ -536,7 +599,7 @@ impl SparseGram {
             n: nrows,
             pattern,
             vals: vec![0.0; nnz],
-            products: Products::new(nnz, &contrib),
+            products,
             symbolic,
             l_values,
             signs: vec![1; nrows],
@@ -671,68 +734,8 @@ impl SparseGram {
 
 #[cfg(test)]
 mod tests {
+    use super::tests_support::truss;
     use super::*;
-
-    /// The Jacobian of a truss: an `n x n` lattice of jittered points with a unit-normalised
-    /// distance row on every bar, a diagonal bracing the first cell, and (when `extra`) the
-    /// first cell's other diagonal, which depends on the cell's other rows. The first point is
-    /// fixed (its columns left out). Returns the rows, the column lists and the dense rows.
-    fn truss(n: usize, extra: bool) -> (usize, Columns, Vec<Vec<(usize, f64)>>) {
-        let mut seed = 0x5eed_u64;
-        let mut jitter = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 5.0
-        };
-        let at = |i: usize, j: usize| j * n + i;
-        let pts: Vec<[f64; 2]> = (0..n * n)
-            .map(|k| {
-                [
-                    10.0 * (k % n) as f64 + jitter(),
-                    10.0 * (k / n) as f64 + jitter(),
-                ]
-            })
-            .collect();
-        let mut bars = Vec::new();
-        for j in 0..n {
-            for i in 0..n {
-                if i + 1 < n {
-                    bars.push((at(i, j), at(i + 1, j)));
-                }
-                if j + 1 < n {
-                    bars.push((at(i, j), at(i, j + 1)));
-                }
-            }
-        }
-        bars.push((at(0, 0), at(1, 1)));
-        if extra {
-            bars.push((at(1, 0), at(0, 1)));
-        }
-        let mut rows = Vec::new();
-        for &(p, q) in &bars {
-            let d = [pts[p][0] - pts[q][0], pts[p][1] - pts[q][1]];
-            let len = d[0].hypot(d[1]);
-            let mut row = Vec::new();
-            for (pt, s) in [(p, 1.0), (q, -1.0)] {
-                if pt != 0 {
-                    // Point k has columns 2k - 2 and 2k - 1.
-                    row.push((2 * pt - 2, s * d[0] / len));
-                    row.push((2 * pt - 1, s * d[1] / len));
-                }
-            }
-            rows.push(row);
-        }
-        let mut lists = vec![Vec::new(); 2 * n * n - 2];
-        let mut v = 0u32;
-        for (r, row) in rows.iter().enumerate() {
-            for &(c, _) in row {
-                lists[c].push((r as u32, v));
-                v += 1;
-            }
-        }
-        (rows.len(), Columns::from_lists(&lists), rows)
-    }
 
     fn values(rows: &[Vec<(usize, f64)>]) -> Vec<f64> {
         rows.iter().flatten().map(|&(_, x)| x).collect()
@@ -811,6 +814,117 @@ mod tests {
         }
     }
 
+    /// `G[i][j]` as the sum over the columns both rows meet, in column order: the order in
+    /// which `G`'s products are summed, so assembled entries must equal it bit for bit.
+    fn reference(rows: &[Vec<(usize, f64)>], i: usize, j: usize) -> f64 {
+        let mut acc = 0.0;
+        for &(c, x) in &rows[i] {
+            for &(d, y) in &rows[j] {
+                if c == d {
+                    acc += x * y;
+                }
+            }
+        }
+        acc
+    }
+
+    /// Rows of a chain: row `k` meets columns `k` and `k + 1`, and every fifth row column
+    /// `k + 2` too; the rows listed in the order `perm`.
+    fn chain(m: usize, perm: &[usize]) -> (Columns, Vec<Vec<(usize, f64)>>) {
+        let rows: Vec<Vec<(usize, f64)>> = perm
+            .iter()
+            .map(|&k| {
+                let mut row = vec![(k, 1.0 + k as f64 * 0.1), (k + 1, -0.7 + k as f64 * 0.03)];
+                if k % 5 == 0 {
+                    row.push((k + 2, 0.3));
+                }
+                row
+            })
+            .collect();
+        let mut lists = vec![Vec::new(); m + 2];
+        let mut v = 0u32;
+        for (r, row) in rows.iter().enumerate() {
+            for &(c, _) in row {
+                lists[c].push((r as u32, v));
+                v += 1;
+            }
+        }
+        (Columns::from_lists(&lists), rows)
+    }
+
+    #[test]
+    fn every_entry_of_g_is_the_sum_of_its_products_in_column_order() {
+        // Sparse: a truss, with and without the dependent row.
+        for extra in [false, true] {
+            let (m, columns, rows) = truss(14, extra);
+            let mut g = Gram::new(m, &columns).unwrap();
+            g.assemble(&values(&rows));
+            let Gram::Sparse(s) = &g else {
+                panic!("a truss does not band")
+            };
+            let (ptr, idx) = (s.pattern.col_ptr(), s.pattern.row_idx());
+            let mut seen = 0;
+            for i in 0..m {
+                for e in ptr[i]..ptr[i + 1] {
+                    let j = idx[e];
+                    assert!(j <= i);
+                    assert_eq!(s.vals[e].to_bits(), reference(&rows, i, j).to_bits());
+                    seen += 1;
+                }
+                // Every nonzero of the upper triangle is in the pattern.
+                let nonzero = (0..=i).filter(|&j| reference(&rows, i, j) != 0.0).count();
+                assert!(ptr[i + 1] - ptr[i] >= nonzero);
+            }
+            assert_eq!(seen, ptr[m]);
+        }
+        // Banded, in the given order and renumbered (a chain listed shuffled).
+        let m = 60;
+        let shuffled: Vec<usize> = (0..m).map(|k| (k * 37) % m).collect();
+        for perm in [(0..m).collect::<Vec<usize>>(), shuffled] {
+            let (columns, rows) = chain(m, &perm);
+            let mut g = Gram::new(m, &columns).unwrap();
+            g.assemble(&values(&rows));
+            let Gram::Banded(b) = &mut g else {
+                panic!("a chain bands")
+            };
+            let mut entries = Vec::new();
+            for p in 0..m {
+                let f = b.g.first(p);
+                let mut row = vec![0.0; p + 1 - f];
+                row_of_g(
+                    p,
+                    f,
+                    &mut row,
+                    &b.jv,
+                    &b.row_ptr,
+                    &b.row_entries,
+                    &b.columns,
+                    b.order.as_ref(),
+                );
+                entries.extend(row);
+            }
+            let pos: Vec<usize> = match &b.order {
+                Some((_, pos)) => pos.iter().map(|&p| p as usize).collect(),
+                None => (0..m).collect(),
+            };
+            let mut row_at = vec![0; m];
+            for (r, &p) in pos.iter().enumerate() {
+                row_at[p] = r;
+            }
+            for p in 0..m {
+                for q in b.g.first(p)..=p {
+                    let e = b.g.index(p, q);
+                    let want = reference(&rows, row_at[p], row_at[q]);
+                    assert_eq!(entries[e].to_bits(), want.to_bits(), "({p}, {q})");
+                }
+                // Nothing outside the envelope.
+                for q in 0..b.g.first(p) {
+                    assert_eq!(reference(&rows, row_at[p], row_at[q]), 0.0);
+                }
+            }
+        }
+    }
+
     #[test]
     fn a_damped_supernodal_factorisation_drops_nothing_and_solves_the_shifted_system() {
         let n = 12;
@@ -857,5 +971,157 @@ mod tests {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod timing {
+    //! `cargo test --release -p loci --lib gram::timing -- --ignored --nocapture`: where the
+    //! time of a large truss's normal equations goes.
+    use super::tests_support::truss;
+    use super::*;
+    use std::time::Instant;
+
+    #[test]
+    #[ignore]
+    fn truss_pieces() {
+        for n in [100usize, 200] {
+            let (m, columns, rows) = truss(n, false);
+            let jv: Vec<f64> = rows.iter().flatten().map(|&(_, x)| x).collect();
+            let t = Instant::now();
+            let (ptr, adj) = adjacency(m, &columns);
+            let t_adj = t.elapsed();
+            let t = Instant::now();
+            let order = order::reverse_cuthill_mckee(m, &ptr, &adj);
+            let t_rcm = t.elapsed();
+            let mut pos = vec![0u32; m];
+            for (p, &r) in order.iter().enumerate() {
+                pos[r as usize] = p as u32;
+            }
+            let t = Instant::now();
+            let first = envelope(m, &columns, Some(&pos));
+            let _ = envelope_len(&first);
+            let t_env = t.elapsed();
+            let t = Instant::now();
+            let _ = Pattern::new(m, &columns);
+            let t_pat = t.elapsed();
+            eprintln!(
+                "n={n}: adjacency {t_adj:?} rcm {t_rcm:?} envelope {t_env:?} pattern {t_pat:?}"
+            );
+            for thr in [1.0, 0.5, 0.25, 0.1, 0.0] {
+                let pattern = Pattern::new(m, &columns);
+                let t = Instant::now();
+                let mut g = SparseGram::new_with(m, pattern, SupernodalThreshold(thr)).unwrap();
+                let t_sym = t.elapsed();
+                g.assemble(&jv);
+                let mut best = std::time::Duration::MAX;
+                for _ in 0..3 {
+                    let t = Instant::now();
+                    assert!(g.factor(0.0, 1e-10));
+                    best = best.min(t.elapsed());
+                }
+                eprintln!(
+                    "  thr {thr}: symbolic {t_sym:?} factor {best:?} supernodal {}",
+                    g.is_supernodal()
+                );
+            }
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn truss_structure_and_factorisation() {
+        for n in [50usize, 100, 200] {
+            let (m, columns, rows) = truss(n, false);
+            let jv: Vec<f64> = rows.iter().flatten().map(|&(_, x)| x).collect();
+            for kind in [Sparse::Auto, Sparse::Simplicial, Sparse::Supernodal] {
+                let t = Instant::now();
+                let mut g = Gram::with(m, &columns, kind).unwrap();
+                let build = t.elapsed();
+                let t = Instant::now();
+                g.assemble(&jv);
+                let asm = t.elapsed();
+                let t = Instant::now();
+                assert!(g.factor(0.0, 1e-10));
+                let fac = t.elapsed();
+                let t = Instant::now();
+                let mut y = vec![1.0; m];
+                g.solve(&mut y);
+                let sol = t.elapsed();
+                let lnnz = match &g {
+                    Gram::Sparse(s) => s.l_values.len(),
+                    Gram::Banded(b) => b.g.values_len(),
+                };
+                eprintln!(
+                    "n={n} {kind:?}: build {build:?} assemble {asm:?} factor {fac:?} solve {sol:?} L {lnnz}"
+                );
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests_support {
+    use super::*;
+
+    /// The Jacobian of a truss: an `n x n` lattice of jittered points with a unit-normalised
+    /// distance row on every bar, a diagonal bracing the first cell, and (when `extra`) the
+    /// first cell's other diagonal, which depends on the cell's other rows. The first point is
+    /// fixed (its columns left out). Returns the rows, the column lists and the dense rows.
+    pub(super) fn truss(n: usize, extra: bool) -> (usize, Columns, Vec<Vec<(usize, f64)>>) {
+        let mut seed = 0x5eed_u64;
+        let mut jitter = || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 5.0
+        };
+        let at = |i: usize, j: usize| j * n + i;
+        let pts: Vec<[f64; 2]> = (0..n * n)
+            .map(|k| {
+                [
+                    10.0 * (k % n) as f64 + jitter(),
+                    10.0 * (k / n) as f64 + jitter(),
+                ]
+            })
+            .collect();
+        let mut bars = Vec::new();
+        for j in 0..n {
+            for i in 0..n {
+                if i + 1 < n {
+                    bars.push((at(i, j), at(i + 1, j)));
+                }
+                if j + 1 < n {
+                    bars.push((at(i, j), at(i, j + 1)));
+                }
+            }
+        }
+        bars.push((at(0, 0), at(1, 1)));
+        if extra {
+            bars.push((at(1, 0), at(0, 1)));
+        }
+        let mut rows = Vec::new();
+        for &(p, q) in &bars {
+            let d = [pts[p][0] - pts[q][0], pts[p][1] - pts[q][1]];
+            let len = d[0].hypot(d[1]);
+            let mut row = Vec::new();
+            for (pt, s) in [(p, 1.0), (q, -1.0)] {
+                if pt != 0 {
+                    // Point k has columns 2k - 2 and 2k - 1.
+                    row.push((2 * pt - 2, s * d[0] / len));
+                    row.push((2 * pt - 1, s * d[1] / len));
+                }
+            }
+            rows.push(row);
+        }
+        let mut lists = vec![Vec::new(); 2 * n * n - 2];
+        let mut v = 0u32;
+        for (r, row) in rows.iter().enumerate() {
+            for &(c, _) in row {
+                lists[c].push((r as u32, v));
+                v += 1;
+            }
+        }
+        (rows.len(), Columns::from_lists(&lists), rows)
     }
 }

@@ -116,6 +116,10 @@ const MAX_NUDGES: usize = 3;
 /// dependent, tried in turn once damped steps are in use.
 const TRUNCATIONS: [f64; 4] = [0.0, 1e-8, 1e-6, 1e-4];
 
+/// Plain steps give way to damped ones once the kept rows' largest residual is below this
+/// fraction of the dropped rows' (see `stuck` in [`Component::solve`]).
+const STUCK: f64 = 1e-2;
+
 /// A step that moved no unknown by more than this (relative to it) leaves `G` close enough
 /// for the next step to be solved with the factorisation it was taken with, refined.
 const REUSE_MOVE: f64 = 1e-4;
@@ -680,6 +684,24 @@ impl Component {
             // to the drawing: it gets as many steps as the separate slide would.
             let sliding = fold && damping.is_none() && iterations < MAX_PROJECTION + MAX_RESTORE;
             let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            // Plain steps solve the kept rows only: once those nearly hold and the dropped ones
+            // are far off (a mesh whose first steps flipped a triangle: kept rows at 2e-3,
+            // dropped ones at 2.5), further plain steps converge to a point where the
+            // dropped rows still miss, and only damped steps, which weigh every row, move
+            // on. Take them now rather than after a window of steps without progress.
+            let stuck = damping.is_none() && !left_out.is_empty() && {
+                let dropped = left_out.iter().fold(0.0f64, |a, &d| a.max(r[d].abs()));
+                let mut kept = 0.0f64;
+                let mut next = left_out.iter().copied().peekable();
+                for (i, v) in r.iter().enumerate() {
+                    if next.peek() == Some(&i) {
+                        next.next();
+                    } else {
+                        kept = kept.max(v.abs());
+                    }
+                }
+                dropped > cfg.tolerance && kept <= STUCK * dropped
+            };
             let holds = max_r <= cfg.tolerance && r.iter().all(|v| v.is_finite());
             // A start that already holds is its own nearest solution.
             if holds && (!sliding || settled || iterations == 0 || iterations >= cfg.max_iterations)
@@ -860,7 +882,7 @@ impl Component {
                 if !accepted {
                     break;
                 }
-            } else if damping.is_none() && since_best < NONMONOTONE {
+            } else if damping.is_none() && since_best < NONMONOTONE && !stuck {
                 // Newton step with backtracking. Non-monotone steps that find no new low for a
                 // whole window are wandering (an impossible triangle climbed from 323 to 690
                 // and crawled there with steps of 1e-8 for 40 iterations): damped steps take

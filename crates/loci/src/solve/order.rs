@@ -49,6 +49,38 @@ pub(super) fn reverse_cuthill_mckee(n: usize, ptr: &[usize], adj: &[u32]) -> Vec
     order
 }
 
+/// A lower estimate of the envelope any reverse Cuthill-McKee order of the rows could reach:
+/// `n² / (2e + 1)`, with `e` the number of breadth-first levels beyond row 0, when row 0
+/// reaches every row (`None` otherwise). No level structure has more than `2e + 1` levels,
+/// and in such an order each row reaches back about a level's width, `n` over the number of
+/// levels on average. One breadth-first walk: far cheaper than the order itself, and enough to
+/// tell a two-dimensional mesh (levels of width about `√n`) from a chain (width about 1).
+pub(super) fn envelope_estimate(n: usize, ptr: &[usize], adj: &[u32]) -> Option<usize> {
+    if n == 0 {
+        return None;
+    }
+    let mut level = vec![u32::MAX; n];
+    let mut queue: Vec<u32> = Vec::with_capacity(n);
+    level[0] = 0;
+    queue.push(0);
+    let mut head = 0;
+    while head < queue.len() {
+        let v = queue[head] as usize;
+        head += 1;
+        for &u in &adj[ptr[v]..ptr[v + 1]] {
+            if level[u as usize] == u32::MAX {
+                level[u as usize] = level[v] + 1;
+                queue.push(u);
+            }
+        }
+    }
+    if queue.len() < n {
+        return None;
+    }
+    let e = level[*queue.last()? as usize] as usize;
+    Some(n.saturating_mul(n) / (2 * e + 1))
+}
+
 /// A row at the far end of `s`'s connected part: breadth-first from `s`, then again from the
 /// least connected row of the last level, while that moves further away (a pseudo-peripheral
 /// row, as George and Liu find it). `level` is scratch, one entry per row, all `u32::MAX` on
@@ -134,6 +166,34 @@ mod tests {
                 "{order:?}"
             );
         }
+    }
+
+    #[test]
+    fn the_estimate_tells_a_grid_from_a_path() {
+        // A path of 100 rows listed from its middle: 49 levels beyond row 0 at most.
+        let label: Vec<u32> = (0..100).map(|i| ((i + 50) % 100) as u32).collect();
+        let edges: Vec<(u32, u32)> = (0..99).map(|i| (label[i], label[i + 1])).collect();
+        let (ptr, adj) = graph(100, &edges);
+        let path = envelope_estimate(100, &ptr, &adj).unwrap();
+        assert!(path <= 200, "{path}");
+        // A 30 x 30 grid from a corner: 58 levels, an envelope of about 900 x 900 / 117.
+        let at = |i: u32, j: u32| j * 30 + i;
+        let mut edges = Vec::new();
+        for j in 0..30 {
+            for i in 0..30 {
+                if i + 1 < 30 {
+                    edges.push((at(i, j), at(i + 1, j)));
+                }
+                if j + 1 < 30 {
+                    edges.push((at(i, j), at(i, j + 1)));
+                }
+            }
+        }
+        let (ptr, adj) = graph(900, &edges);
+        assert_eq!(envelope_estimate(900, &ptr, &adj), Some(900 * 900 / 117));
+        // Not every row reached: no estimate.
+        let (ptr, adj) = graph(4, &[(0, 1), (2, 3)]);
+        assert_eq!(envelope_estimate(4, &ptr, &adj), None);
     }
 
     #[test]
