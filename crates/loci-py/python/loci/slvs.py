@@ -520,6 +520,33 @@ def add_constraint(
 
 C = ConstraintType
 
+_PT_PT_DISTANCE = int(ConstraintType.PT_PT_DISTANCE)
+_PERPENDICULAR = int(ConstraintType.PERPENDICULAR)
+_POINT_TYPES = (_P3, _P2)
+
+
+def _quick(
+    grouph: int, c_type: int, w: int, val: float, pa: int, pb: int, ea: int, eb: int, other: int
+) -> Slvs_Constraint:
+    # add_constraint for handles already read, without entityC, entityD and other2: the path
+    # of the constraints a script adds by the thousand (a chain's distances and angles).
+    h = _m.add_constraint(grouph, c_type, w, val, pa, pb, ea, eb, 0, 0, other, 0)
+    return {
+        "h": h,
+        "group": grouph,
+        "type": c_type,
+        "wrkpl": w,
+        "valA": float(val),
+        "ptA": pa,
+        "ptB": pb,
+        "entityA": ea,
+        "entityB": eb,
+        "entityC": 0,
+        "entityD": 0,
+        "other": other,
+        "other2": 0,
+    }
+
 
 def coincident(
     grouph: int, entityA: Slvs_Entity, entityB: Slvs_Entity, workplane: Slvs_Entity = E_FREE_IN_3D
@@ -545,8 +572,8 @@ def distance(
 ) -> Slvs_Constraint:
     """The distance between two points, from a point to a workplane (``workplane`` free in
     3D), or to a line."""
-    if _is_point(entityA) and _is_point(entityB):
-        return add_constraint(grouph, C.PT_PT_DISTANCE, workplane, value, entityA, entityB)
+    if entityA["type"] in _POINT_TYPES and entityB["type"] in _POINT_TYPES:
+        return _quick(grouph, _PT_PT_DISTANCE, workplane["h"], value, entityA["h"], entityB["h"], 0, 0, 0)
     if _is_point(entityA) and _is_wp(entityB) and _free(workplane):
         return add_constraint(grouph, C.PT_PLANE_DISTANCE, entityB, value, entityA, E_NONE, entityB)
     if _is_point(entityA) and _is_line(entityB):
@@ -740,8 +767,8 @@ def perpendicular(
     """Two lines are perpendicular."""
     if not _two_lines(entityA, entityB, workplane):
         raise ModelError("invalid arguments for perpendicular")
-    return add_constraint(
-        grouph, C.PERPENDICULAR, workplane, 0.0, E_NONE, E_NONE, entityA, entityB, E_NONE, E_NONE, int(inverse)
+    return _quick(
+        grouph, _PERPENDICULAR, workplane["h"], 0.0, 0, 0, entityA["h"], entityB["h"], 1 if inverse else 0
     )
 
 
