@@ -61,8 +61,20 @@ pub(super) fn envelope_estimate(n: usize, ptr: &[usize], adj: &[u32]) -> Option<
     }
     let mut level = vec![u32::MAX; n];
     let mut queue: Vec<u32> = Vec::with_capacity(n);
-    level[0] = 0;
-    queue.push(0);
+    breadth_first(0, ptr, adj, &mut level, &mut queue);
+    if queue.len() < n {
+        return None;
+    }
+    let e = level[*queue.last()? as usize] as usize;
+    Some(n.saturating_mul(n) / (2 * e + 1))
+}
+
+/// Walks `root`'s connected part breadth first: `queue` receives its rows in the order met,
+/// `level` (all `u32::MAX` there on entry) each one's distance from `root`.
+fn breadth_first(root: usize, ptr: &[usize], adj: &[u32], level: &mut [u32], queue: &mut Vec<u32>) {
+    queue.clear();
+    queue.push(root as u32);
+    level[root] = 0;
     let mut head = 0;
     while head < queue.len() {
         let v = queue[head] as usize;
@@ -74,11 +86,6 @@ pub(super) fn envelope_estimate(n: usize, ptr: &[usize], adj: &[u32]) -> Option<
             }
         }
     }
-    if queue.len() < n {
-        return None;
-    }
-    let e = level[*queue.last()? as usize] as usize;
-    Some(n.saturating_mul(n) / (2 * e + 1))
 }
 
 /// A row at the far end of `s`'s connected part: breadth-first from `s`, then again from the
@@ -96,20 +103,7 @@ fn far_end(
     let mut depth: Option<u32> = None;
     let mut queue: Vec<u32> = Vec::new();
     for _ in 0..8 {
-        queue.clear();
-        queue.push(root as u32);
-        level[root] = 0;
-        let mut head = 0;
-        while head < queue.len() {
-            let v = queue[head] as usize;
-            head += 1;
-            for &u in &adj[ptr[v]..ptr[v + 1]] {
-                if level[u as usize] == u32::MAX {
-                    level[u as usize] = level[v] + 1;
-                    queue.push(u);
-                }
-            }
-        }
+        breadth_first(root, ptr, adj, level, &mut queue);
         let last = queue.last().map_or(0, |&v| level[v as usize]);
         let candidate = queue
             .iter()
