@@ -20,6 +20,7 @@ pub struct SolveOptions {
     pub max_iterations: Option<usize>,
     pub find_failed: Option<bool>,
     pub nearest: Option<bool>,
+    pub solvespace_angles: Option<bool>,
 }
 
 impl SolveOptions {
@@ -36,6 +37,9 @@ impl SolveOptions {
         }
         if let Some(n) = self.nearest {
             c = c.with_nearest(n);
+        }
+        if let Some(a) = self.solvespace_angles {
+            c = c.with_solvespace_angles(a);
         }
         c
     }
@@ -596,11 +600,14 @@ impl PySystem {
 
     /// Solves ``group``: its parameters are the unknowns, ``dragged`` parameters move as little
     /// as possible. Values are written back when the result is ok; an inconsistent system is a
-    /// result naming the failed constraints. The GIL is released while it runs.
+    /// result naming the failed constraints. ``nearest=False`` ends where Newton's steps do, as
+    /// SolveSpace does; ``solvespace_angles=True`` writes 2D angles as SolveSpace does, so that
+    /// with it an under-constrained sketch ends where SolveSpace's would. The GIL is released
+    /// while it runs.
     ///
     /// Raises ``ModelError`` for an invalid model, ``SolveError`` when it cannot start.
     #[pyo3(signature = (group, dragged = Vec::new(), *, find_failed = true, tolerance = None,
-        max_iterations = None, nearest = None))]
+        max_iterations = None, nearest = None, solvespace_angles = None))]
     #[allow(clippy::too_many_arguments)] // Python's keyword arguments
     fn solve(
         &mut self,
@@ -611,12 +618,14 @@ impl PySystem {
         tolerance: Option<f64>,
         max_iterations: Option<usize>,
         nearest: Option<bool>,
+        solvespace_angles: Option<bool>,
     ) -> PyResult<SolveResult> {
         let opts = SolveOptions {
             tolerance,
             max_iterations,
             find_failed: Some(find_failed),
             nearest,
+            solvespace_angles,
         };
         self.solve_in(py, group, &dragged, opts)
     }

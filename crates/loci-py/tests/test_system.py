@@ -199,3 +199,20 @@ def test_repr_and_copy() -> None:
     t = copy.deepcopy(s)
     t.set_value(8, 100.0)
     assert s.value(8) != 100.0
+
+
+def test_solvespace_angles_end_where_solvespace_does() -> None:
+    # Jansen's linkage as SolveSpace's own test draws it (10 degrees of freedom): p8 (params 24
+    # and 25) ends where SolveSpace's Newton path does only with its form of the 2D angle.
+    root = Path(__file__).resolve().parents[3]
+    drawn = loci.load(root / "crates/loci/tests/data/bugs/jansen_linkage.json")
+    assert isinstance(drawn, loci.System)
+    text = drawn.to_json()
+    ends = {}
+    for angles in (False, True):
+        s = loci.System.from_json(text)
+        r = s.solve(1, nearest=False, solvespace_angles=angles)
+        assert r.ok
+        ends[angles] = (s.value(24), s.value(25))
+    assert ends[True] == (pytest.approx(18.93036, abs=1e-5), pytest.approx(13.63778, abs=1e-5))
+    assert ends[False] == (pytest.approx(19.35966, abs=1e-5), pytest.approx(14.03307, abs=1e-5))

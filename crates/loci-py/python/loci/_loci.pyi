@@ -200,6 +200,7 @@ class System:
         tolerance: Optional[float] = None,
         max_iterations: Optional[int] = None,
         nearest: Optional[bool] = None,
+        solvespace_angles: Optional[bool] = None,
     ) -> SolveResult: ...
     def check(self, group: int) -> CheckResult: ...
 
