@@ -106,7 +106,12 @@ export interface SolveOptions {
   dragged_scale?: number;
   rank_tolerance?: number;
   verify_conflicts_up_to?: number;
+  /** `false`: end where Newton's steps end, as SolveSpace does (default `true`: the solution
+   * nearest the drawing). */
   nearest?: boolean;
+  /** Write 2D angles as SolveSpace does, so that with `nearest: false` an under-constrained
+   * sketch ends where SolveSpace's would (default `false`). */
+  solvespace_angles?: boolean;
 }
 
 /** The report of a solve of one group. */

@@ -2,6 +2,7 @@
 // diagnosed, bulk values as Float64Array; errors name the object at fault.
 import { test } from "node:test";
 import assert from "node:assert/strict";
+import { readFileSync } from "node:fs";
 import loci, { example } from "./load.mjs";
 
 const { System, ModelError, SolveError, FormatError } = loci;
@@ -98,4 +99,20 @@ test("the report built from numbers is the report's JSON, field for field and in
     assert.equal(JSON.stringify(fromFile.solveRequest()), JSON.stringify(rawReport));
   }
   assert.deepEqual(outcomes, ["okay", "inconsistent", "redundant_okay"]);
+});
+
+test("with SolveSpace's angle form Jansen's linkage ends where SolveSpace's test says", () => {
+  const text = readFileSync(
+    new URL("../../loci/tests/data/bugs/jansen_linkage.json", import.meta.url),
+    "utf8",
+  );
+  const ends = [false, true].map((angles) => {
+    const sys = System.fromJson(text);
+    const r = sys.solve(1, { nearest: false, solvespace_angles: angles });
+    assert.equal(r.outcome, "okay");
+    return [sys.value(24), sys.value(25)];
+  });
+  const near = (a, b) => Math.abs(a - b) < 1e-5;
+  assert.ok(near(ends[1][0], 18.93036) && near(ends[1][1], 13.63778), String(ends[1]));
+  assert.ok(near(ends[0][0], 19.35966) && near(ends[0][1], 14.03307), String(ends[0]));
 });
