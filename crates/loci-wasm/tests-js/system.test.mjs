@@ -22,7 +22,9 @@ test("two points read from loci JSON solve to 10 apart and horizontal", () => {
   assert.deepEqual(Array.from(again.values()), Array.from(sys.values()));
 });
 
-test("a system built by calls solves, and reports a conflict by constraint", () => {
+/** A workplane in group 1 and two of its points 10 apart in group 2 (constraint 1), built by
+ * calls. */
+function twoPointsByCalls() {
   const sys = new System();
   [[1, 0], [2, 0], [3, 0], [4, 1], [5, 0], [6, 0], [7, 0]].forEach(([h, v]) => sys.addParam(h, 1, v));
   sys.addEntity({ h: 101, group: 1, type: "point_in_3d", params: [1, 2, 3] });
@@ -32,6 +34,11 @@ test("a system built by calls solves, and reports a conflict by constraint", () 
   sys.addEntity({ h: 301, group: 2, type: "point_in_2d", workplane: 200, params: [11, 12] });
   sys.addEntity({ h: 302, group: 2, type: "point_in_2d", workplane: 200, params: [13, 14] });
   sys.addConstraint({ h: 1, group: 2, type: "pt_pt_distance", workplane: 200, pt_a: 301, pt_b: 302, val: 10 });
+  return sys;
+}
+
+test("a system built by calls solves, and reports a conflict by constraint", () => {
+  const sys = twoPointsByCalls();
   sys.addConstraint({ h: 2, group: 2, type: "where_dragged", workplane: 200, pt_a: 301 });
   const r = sys.solve(2);
   assert.equal(r.outcome, "okay");
@@ -70,15 +77,7 @@ test("the report built from numbers is the report's JSON, field for field and in
   // Okay, inconsistent (failed constraints), redundant: each solved from the same start by the
   // raw JSON call and by the wrapper.
   const build = (extra) => {
-    const sys = new System();
-    [[1, 0], [2, 0], [3, 0], [4, 1], [5, 0], [6, 0], [7, 0]].forEach(([h, v]) => sys.addParam(h, 1, v));
-    sys.addEntity({ h: 101, group: 1, type: "point_in_3d", params: [1, 2, 3] });
-    sys.addEntity({ h: 102, group: 1, type: "normal_in_3d", params: [4, 5, 6, 7] });
-    sys.addEntity({ h: 200, group: 1, type: "workplane", origin: 101, normal: 102 });
-    [[11, 1], [12, 2], [13, 9], [14, 3]].forEach(([h, v]) => sys.addParam(h, 2, v));
-    sys.addEntity({ h: 301, group: 2, type: "point_in_2d", workplane: 200, params: [11, 12] });
-    sys.addEntity({ h: 302, group: 2, type: "point_in_2d", workplane: 200, params: [13, 14] });
-    sys.addConstraint({ h: 1, group: 2, type: "pt_pt_distance", workplane: 200, pt_a: 301, pt_b: 302, val: 10 });
+    const sys = twoPointsByCalls();
     extra.forEach((c) => sys.addConstraint(c));
     return sys;
   };
