@@ -238,3 +238,58 @@ fn a_point_shared_by_too_many_constraints_is_a_typed_error_not_an_abort() {
     );
     assert!(err.to_string().contains("12000 equations"), "{err}");
 }
+
+/// A staircase of `n` segments of length 3, each perpendicular to the next, the first
+/// horizontal from a dragged point, drawn far from any answer: its points along the x axis,
+/// 3 apart, with a little height each.
+fn staircase_drawn_flat(n: u32) -> System {
+    use loci::ConstraintKind as K;
+    let mut s = Sketch::new();
+    for i in 0..=n {
+        let y = 0.1 * f64::from((7 * i) % 5);
+        s.point(1_000 + i, 2, [3.0 * f64::from(i), y]);
+    }
+    for i in 0..n {
+        s.line(5_000 + i, 2, 1_000 + i, 1_001 + i);
+    }
+    s.on_points(2, K::WhereDragged, 1_000, 0, 0.0);
+    s.on_entities(2, K::Horizontal, 5_000, 0, 0.0);
+    for i in 0..n {
+        s.on_points(2, K::PtPtDistance, 1_000 + i, 1_001 + i, 3.0);
+    }
+    for i in 1..n {
+        s.on_entities(2, K::Perpendicular, 4_999 + i, 5_000 + i, 0.0);
+    }
+    s.sys
+}
+
+#[test]
+fn a_staircase_drawn_flat_is_never_called_inconsistent() {
+    // Every segment's length and the turn between segments can hold together (a staircase of
+    // right-angle turns), so no set of these constraints conflicts: a solve that cannot reach
+    // a solution from a drawing this far off did not converge. Sets of 42 and 69 of them were
+    // once named as conflicts because Newton on them alone ran off (residuals of 10²³), which
+    // says nothing about whether they can hold.
+    for n in [100, 200] {
+        for cfg in [
+            Config::default(),
+            Config::default()
+                .with_nearest(false)
+                .with_solvespace_angles(true),
+        ] {
+            let mut sys = staircase_drawn_flat(n);
+            let r = solve(&mut sys, 2.into(), &[], &cfg).unwrap();
+            assert_ne!(r.outcome, Outcome::Inconsistent, "{n} segments: {r:?}");
+            if r.outcome.is_ok() {
+                assert_eq!(r.dof, 0);
+            }
+        }
+        let d = staircase_drawn_flat(n).diagnose(2).unwrap();
+        assert!(
+            d.conflicting.is_empty(),
+            "{n} segments: {:?}",
+            d.conflicting
+        );
+        assert_ne!(d.outcome, Outcome::Inconsistent);
+    }
+}
