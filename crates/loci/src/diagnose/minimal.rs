@@ -146,17 +146,9 @@ fn consistent_from(
 /// How a solve of some equations alone ended.
 enum Alone {
     Converged,
-    /// Stopped at a least-squares point with residuals left.
     Failed,
-    /// Stopped elsewhere: no verdict.
-    Astray,
     TooLarge,
 }
-
-/// The most `‖Jnᵀ rn‖ / ‖rn‖` at a point a failed solve of a large set counts as a
-/// least-squares point: the loops of impossible grids end below 10⁻³, most sets of fighting
-/// angle mates below 10⁻⁵ (one at 0.03 after its whole budget); solves that ran off end near 1.
-const STATIONARY: f64 = 0.1;
 
 /// Newton on the equations of `kernels` alone, from `values` (one per parameter; the other
 /// parameters are constants), columns weighted by `scale_of_param`. On success the solution
@@ -248,23 +240,7 @@ fn solve_set(
         return Alone::TooLarge;
     }
     if !fin.converged {
-        // A failure of many constraints is evidence only where Newton stopped at a
-        // least-squares point of the set: a solve that ran off (a staircase drawn flat, its
-        // residual 10²³ after a few steps) says nothing about whether they can hold together.
-        // A small set's solve can stall short of such a point on a true conflict (a height
-        // beyond a side, at 1.3 after 8 steps); small sets are checked more ways instead.
-        if kernels.len() <= LARGE_SET {
-            return Alone::Failed;
-        }
-        let mut at = values.to_vec();
-        for (&c, &v) in globals.iter().zip(&x) {
-            at[eqs.param_of_col[c as usize]] = v;
-        }
-        return if gradient_ratio(eqs, defs, kernels, &at) <= STATIONARY {
-            Alone::Failed
-        } else {
-            Alone::Astray
-        };
+        return Alone::Failed;
     }
     for (&c, &v) in globals.iter().zip(&x) {
         values[eqs.param_of_col[c as usize]] = v;
@@ -333,41 +309,4 @@ pub(crate) fn minimise(
     let mut out: Vec<Member> = keep.into_iter().map(|x| x.0).collect();
     out.sort_by(Member::report_order);
     (out, true)
-}
-
-/// `‖Jnᵀ rn‖ / ‖rn‖` over the rows of `kernels` (defined by `defs`) at `values`, rows scaled
-/// to unit length: near zero where a solve stopped at a least-squares point of those rows,
-/// where their residuals cannot be reduced to first order.
-fn gradient_ratio(eqs: &Equations, defs: &[Kernel], kernels: &[usize], values: &[f64]) -> f64 {
-    let mut g = vec![0.0; eqs.columns.len()];
-    let (mut xs, mut r, mut jv) = (Vec::new(), Vec::new(), Vec::new());
-    let mut rr = 0.0;
-    for &k in kernels {
-        let (kern, b) = (&defs[k], &eqs.blocks[k]);
-        kern.gather(values, &mut xs);
-        let w = b.cols.len();
-        r.clear();
-        r.resize(kern.rows, 0.0);
-        jv.clear();
-        jv.resize(kern.rows * w, 0.0);
-        if w == 0 {
-            let mut out = Rows::new();
-            kern.eq.eval(&xs, &mut out);
-            rr += out.v[..out.n].iter().map(|v| v * v).sum::<f64>();
-            continue;
-        }
-        kern.eq.jacobian_active(&xs, &b.active, &mut r, &mut jv);
-        for (i, row) in jv.chunks(w).enumerate() {
-            let norm = row.iter().map(|v| v * v).sum::<f64>().sqrt();
-            if !(norm > 0.0 && norm.is_finite()) {
-                continue;
-            }
-            let rn = r[i] / norm;
-            rr += rn * rn;
-            for (&c, &v) in b.cols.iter().zip(row) {
-                g[c as usize] += v / norm * rn;
-            }
-        }
-    }
-    g.iter().map(|v| v * v).sum::<f64>().sqrt() / rr.sqrt()
 }

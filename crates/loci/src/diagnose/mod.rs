@@ -82,6 +82,9 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
         cfg,
         usize::MAX,
     );
+    if ran_off(&eqs, &start, report.residual) {
+        conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
+    }
     let mut redundant = redundant::redundant_sets(&eqs, &lin, &circuits, cfg.rank_tolerance);
     // Constraints written more than once never reach the equations: each copy is redundant.
     for (first, copies) in crate::equations::duplicate_groups(sys, group) {
@@ -234,6 +237,10 @@ pub(crate) fn name_conflicts(
         .map(|&c| Owner::Constraint(c))
         .chain(report.failed_entities.iter().map(|&e| Owner::Entity(e)))
         .collect();
+    let Ok(all) = Equations::new(sys, group, &start) else {
+        return false;
+    };
+    let ran = ran_off(&all, &start, report.residual);
     let mut sets = Vec::new();
     if !seed.is_empty() {
         let keep = focus::focus(sys, group, &seed, kernels, links);
@@ -242,14 +249,14 @@ pub(crate) fn name_conflicts(
         }
     }
     let whole = if sets.is_empty() {
-        let Ok(eqs) = Equations::new(sys, group, &start) else {
-            return false;
-        };
-        sets = sets_in(&eqs);
-        Some(eqs)
+        sets = sets_in(&all);
+        Some(all)
     } else {
         None
     };
+    if ran {
+        sets.retain(|s| s.members.len() <= minimal::LARGE_SET);
+    }
     report.failed.clear();
     report.failed_entities.clear();
     // Shown only by a set that failed on its own from where the solve stopped, from the
@@ -260,7 +267,13 @@ pub(crate) fn name_conflicts(
         .any(|s| s.verified || s.members.len() <= minimal::LARGE_SET);
     let members: Vec<Member> = if sets.is_empty() {
         report.outcome = Outcome::DidNotConverge;
-        let Some(eqs) = whole else { return false };
+        let eqs = match whole {
+            Some(eqs) => eqs,
+            None => match Equations::new(sys, group, &start) {
+                Ok(eqs) => eqs,
+                Err(_) => return false,
+            },
+        };
         let lin = eqs.linearise(values);
         (0..eqs.rows)
             .filter(|&i| !(lin.r[i].abs() <= cfg.tolerance))
@@ -285,6 +298,25 @@ pub(crate) fn name_conflicts(
     report.failed_entities.dedup();
     proven
 }
+
+/// Whether a solve that ended with largest residual `end` ran off: it ended many times
+/// farther from holding than the drawing (`start`) was. Newton on a staircase of
+/// perpendicular segments drawn flat along a line ends with residuals of 10²⁹, where its rows
+/// depend on one another and large sets of them fail alone as well (Newton on them runs off
+/// too); but every one of its constraints can hold with the others. Where a solve ran off,
+/// only sets small enough to be checked every way (built up one constraint at a time, angles
+/// turned) are named: a true conflict found there (seed 976, a solve that ended at 3·10⁷)
+/// still is.
+fn ran_off(eqs: &Equations, start: &[f64], end: f64) -> bool {
+    let mut r = vec![0.0; eqs.rows];
+    eqs.residuals(start, &mut r);
+    let before = r.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    !(end <= RAN_OFF * before.max(1.0))
+}
+
+/// How many times the drawing's largest residual (or 1, if larger) a solve must end beyond
+/// to have run off.
+const RAN_OFF: f64 = 1e3;
 
 /// The most constraints a conflict is searched among, one solve per member, when no
 /// dependence found where the solve stopped fails on its own.

@@ -160,7 +160,6 @@ impl Equations {
     }
 
     /// Residuals only, at `values` (one per parameter).
-    #[cfg_attr(not(test), allow(dead_code))]
     pub fn residuals(&self, values: &[f64], r: &mut [f64]) {
         let mut xs = Vec::new();
         for (k, b) in self.kernels.iter().zip(&self.blocks) {
