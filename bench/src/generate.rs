@@ -64,6 +64,7 @@ pub fn generate(family: Family, variant: Variant, size: usize) -> Problem {
         Family::Chain3d => chain_3d(&mut b, size),
         Family::Truss => truss(&mut b, size),
         Family::Mesh => mesh(&mut b, size),
+        Family::Profiles => profiles(&mut b, size),
     };
     b.finish(family, variant, size, extra)
 }
@@ -497,4 +498,102 @@ fn mesh(b: &mut Builder, n: usize) -> Extra {
     Extra {
         con: b.distance(other.0, other.1),
     }
+}
+
+/// An `n x n` sketch of four-sided profiles sharing their edges (the cells of a jittered
+/// lattice of `(n + 1) x (n + 1)` points, a distance on every edge), braced by an angle at
+/// one corner of every profile of the first row and column (which makes the lattice rigid
+/// but for its rotation about the fixed corner), with a slot in every third profile.
+fn profiles(b: &mut Builder, n: usize) -> Extra {
+    let at = jittered_lattice(b, n + 1);
+    let m = n + 1;
+    // Per point: the lines leaving it rightwards and upwards.
+    let mut right = vec![usize::MAX; m * m];
+    let mut up = vec![usize::MAX; m * m];
+    for j in 0..m {
+        for i in 0..m {
+            if i + 1 < m {
+                right[at(i, j)] = b.line(at(i, j), at(i + 1, j));
+                b.cons.push(b.distance(at(i, j), at(i + 1, j)));
+            }
+            if j + 1 < m {
+                up[at(i, j)] = b.line(at(i, j), at(i, j + 1));
+                b.cons.push(b.distance(at(i, j), at(i, j + 1)));
+            }
+        }
+    }
+    for j in 0..n {
+        for i in 0..n {
+            let corner = at(i, j);
+            if i == 0 || j == 0 {
+                b.cons.push(b.angle(right[corner], up[corner]));
+            }
+            if (i + 2 * j) % 3 == 0 {
+                slot(b, corner, at(i + 1, j), right[corner]);
+            }
+        }
+    }
+    // The first profile is rigid: its diagonal follows from its sides and its angle.
+    Extra {
+        con: b.distance(at(0, 0), at(1, 1)),
+    }
+}
+
+/// A slot in the profile whose bottom edge `base` runs from `p` to `q`: two lines of equal
+/// length joined at both ends by half circles tangent to both, its left centre placed by its
+/// distances from `p` and `q` and its bottom line by its angle to `base`.
+fn slot(b: &mut Builder, p: usize, q: usize, base: usize) {
+    let o = b.truth[p];
+    let theta = b.rng.range(-0.3, 0.3);
+    let (len, r) = (b.rng.range(2.5, 3.5), b.rng.range(0.8, 1.2));
+    let u = [theta.cos(), theta.sin()];
+    let nrm = [-u[1], u[0]];
+    let at = |c: [f64; 2], s: f64, v: [f64; 2]| [c[0] + s * v[0], c[1] + s * v[1]];
+    let c2 = [
+        o[0] + 3.0 + b.rng.range(-0.3, 0.3),
+        o[1] + 4.5 + b.rng.range(-0.3, 0.3),
+    ];
+    let lo = at(c2, -r, nrm); // bottom left
+    let lo_r = at(lo, len, u); // bottom right
+    let c1 = at(lo_r, r, nrm);
+    let hi_r = at(c1, r, nrm); // top right
+    let hi = at(c2, r, nrm); // top left
+    let pt = |b: &mut Builder, xy: [f64; 2]| b.point([xy[0], xy[1], 0.0], false);
+    let (a, e) = (pt(b, lo), pt(b, lo_r));
+    let (c, d) = (pt(b, hi_r), pt(b, hi));
+    let bottom = b.line(a, e);
+    let top = b.line(c, d);
+    // The right half circle runs counter-clockwise from the bottom line's end to the top
+    // line's start; the left one from the top line's end to the bottom line's start.
+    let (rc, rs, re) = (pt(b, c1), pt(b, lo_r), pt(b, hi_r));
+    let (lc, ls, le) = (pt(b, c2), pt(b, hi), pt(b, lo));
+    b.arcs.push(Arc {
+        center: rc,
+        start: rs,
+        end: re,
+    });
+    let right_arc = b.arcs.len() - 1;
+    b.arcs.push(Arc {
+        center: lc,
+        start: ls,
+        end: le,
+    });
+    let left_arc = right_arc + 1;
+    for (x, y) in [(e, rs), (c, re), (d, ls), (a, le)] {
+        b.cons.push(Con::Coincident { a: x, b: y });
+    }
+    for (arc, at_end, l) in [
+        (right_arc, false, bottom),
+        (right_arc, true, top),
+        (left_arc, false, top),
+        (left_arc, true, bottom),
+    ] {
+        b.cons.push(Con::Tangent { arc, at_end, l });
+    }
+    b.cons.push(Con::ArcRadius { arc: right_arc, r });
+    b.cons.push(Con::ArcRadius { arc: left_arc, r });
+    b.cons.push(b.distance(a, e));
+    b.cons.push(b.distance(p, lc));
+    b.cons.push(b.distance(q, lc));
+    b.cons.push(b.angle(base, bottom));
 }

@@ -33,7 +33,7 @@ use std::time::Duration;
 static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 const USAGE: &str = "usage: loci-bench [--quick] [--out DIR] [--limit SECONDS] \
-[--solvers loci,ezpz,slvs_py,slvs_c,planegcs] [--families chain,triangles,grid,fillets,chain_3d] \
+[--solvers loci,ezpz,slvs_py,slvs_c,planegcs] [--families chain,triangles,grid,fillets,chain_3d,truss,mesh,profiles] \
 [--max-size N] [--sizes N,N,...]";
 
 fn main() {

@@ -29,11 +29,13 @@ pub enum Family {
     Truss,
     /// A triangulated planar mesh with a distance on every edge.
     Mesh,
+    /// Closed profiles sharing edges, with slots of lines and tangent arcs inside them.
+    Profiles,
 }
 
 impl Family {
     /// Every family, in report order.
-    pub const ALL: [Family; 7] = [
+    pub const ALL: [Family; 8] = [
         Family::Chain,
         Family::Triangles,
         Family::Grid,
@@ -41,12 +43,16 @@ impl Family {
         Family::Chain3d,
         Family::Truss,
         Family::Mesh,
+        Family::Profiles,
     ];
 
     /// Whether the generator takes the side `n` of an `n x n` layout rather than a count.
     #[must_use]
     pub fn takes_side(self) -> bool {
-        matches!(self, Family::Grid | Family::Truss | Family::Mesh)
+        matches!(
+            self,
+            Family::Grid | Family::Truss | Family::Mesh | Family::Profiles
+        )
     }
 
     /// The snake_case name.
@@ -60,6 +66,7 @@ impl Family {
             Family::Chain3d => "chain_3d",
             Family::Truss => "truss",
             Family::Mesh => "mesh",
+            Family::Profiles => "profiles",
         }
     }
 
@@ -100,6 +107,14 @@ impl Family {
                  by one distance per interior point (a triangulation has 3N - 3 - B edges for \
                  2N - 3 degrees of freedom), so even the solvable variant holds about N \
                  consistent but implied distances"
+            }
+            Family::Profiles => {
+                "sketch of N = n x n closed four-sided profiles on a jittered lattice, sharing \
+                 their edges: a distance on every edge, an angle at one corner of each profile \
+                 of the first row and column, one corner fixed; every third profile holds a \
+                 slot (two lines and two arcs, tangent at all four joints, radii and one \
+                 length given) placed by two distances and an angle (1 DOF left, the rotation \
+                 about the fixed corner)"
             }
         }
     }
