@@ -9,14 +9,34 @@
 //! with its partial derivatives by local slot (the rotated axes are linear in each quaternion
 //! component), then combined by the chain rule. The residuals are the generic `f64`
 //! evaluation itself, to the last bit; the derivatives are the dual numbers' to rounding, as
-//! tests check. Anything not covered (a workplane, a 2D point, a degenerate direction) takes
-//! the generic path (returns false).
+//! tests check. Anything not covered (a workplane, a 2D point, a degenerate direction, an
+//! equation on plain points and normals only) takes the generic path (returns false).
 
 use super::points::dominant_axis;
 use super::refs::{Ent, NormalRef, PointRef, Slot};
 use super::{EqKind, Equation, Rows};
 use crate::geom::Vec3;
 use crate::model::ConstraintKind;
+
+#[cfg(test)]
+thread_local! {
+    /// Whether this thread's solves leave every equation here to the dual numbers.
+    static DUAL_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Runs `f` with the equations of this file differentiated by dual numbers, as every solve did
+/// before they were written out: tests compare the two.
+#[cfg(test)]
+pub(crate) fn dual_only<R>(f: impl FnOnce() -> R) -> R {
+    struct Restore(bool);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            DUAL_ONLY.with(|d| d.set(self.0));
+        }
+    }
+    let _restore = Restore(DUAL_ONLY.with(|d| d.replace(true)));
+    f()
+}
 
 /// Most slots one point or direction reads: a line between two moved points (seven each).
 const MAX_SLOTS: usize = 14;
@@ -230,6 +250,18 @@ fn direction(ent: &Ent, x: &[f64], k: &[[f64; 4]]) -> Option<Lin> {
     Some(out)
 }
 
+/// Whether `e` reads a point or normal carried by a pose (or a translation).
+fn reads_carried(e: &Equation) -> bool {
+    let point = |p: &PointRef| matches!(p, PointRef::Moved { .. } | PointRef::Shifted { .. });
+    e.pts.iter().flatten().any(point)
+        || e.ents.iter().any(|ent| match ent {
+            Ent::Point(p) => point(p),
+            Ent::Normal(n) => matches!(n, NormalRef::Turned { .. }),
+            Ent::Line(l) => l.iter().any(point),
+            _ => false,
+        })
+}
+
 /// A positive finite length, by which the quotients can divide.
 fn usable(d: f64) -> bool {
     d > 0.0 && d.is_finite()
@@ -247,6 +279,18 @@ pub(super) fn jacobian(
 ) -> bool {
     use ConstraintKind as K;
     if active.is_empty() || e.wp.is_some() {
+        return false;
+    }
+    #[cfg(test)]
+    if DUAL_ONLY.with(std::cell::Cell::get) {
+        return false;
+    }
+    // Plain points and normals keep the dual numbers: the solve of an impossible assembly
+    // is done again on them (see `solve::solve_values_checked`), and the conflict it names
+    // is read at a least-squares point that the last bits of the derivatives can move. A
+    // quaternion's unit length is the exception: its derivative, `2 q`, is the same to the
+    // bit either way.
+    if e.kind != EqKind::UnitQuaternion && !reads_carried(e) {
         return false;
     }
     let k = &e.consts[..];

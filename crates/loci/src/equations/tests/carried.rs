@@ -607,6 +607,87 @@ fn same_assembly(what: &str, new: &AssemblyReport, old: &AssemblyReport, diagnos
     }
 }
 
+/// The assemblies of [`assemblies_solve_as_with_own_unknowns`] and one whose mates hold a
+/// face: every kind the written-out derivatives cover, a conflict and a redundancy.
+fn assembly_cases() -> Vec<(&'static str, Assembly)> {
+    let mut plate = chain(3, &[]);
+    let face = Reference::Face {
+        point: [0.0, 0.0, 0.0],
+        normal: [0.0, 0.0, 1.0],
+    };
+    let floor = Component::new("floor", Pose::IDENTITY).with("top", face.clone());
+    let mut floor = floor;
+    floor.grounded = true;
+    plate.add_component(floor).unwrap();
+    plate
+        .add_mate(Mate::new(
+            MateKind::Coincident,
+            Selection::on("link2", "tip"),
+            Selection::on("floor", "top"),
+        ))
+        .unwrap();
+    vec![
+        ("a chain of six links", chain(6, &[])),
+        (
+            "a second angle between the same arms conflicts",
+            chain(
+                3,
+                &[(MateKind::Angle { degrees: 45.0 }, (1, "arm"), (2, "arm"))],
+            ),
+        ),
+        (
+            "a distance the chain already holds is redundant",
+            chain(
+                4,
+                &[(
+                    MateKind::Distance { value: 1.0 },
+                    (1, "pivot"),
+                    (2, "pivot"),
+                )],
+            ),
+        ),
+        ("a chain whose last tip rests on a grounded face", plate),
+    ]
+}
+
+#[test]
+fn written_out_derivatives_solve_assemblies_as_the_dual_numbers_do() {
+    let mut outcomes = Vec::new();
+    for (what, asm) in assembly_cases() {
+        for diagnose in [false, true] {
+            let mut a = asm.clone();
+            let mut b = asm.clone();
+            a.options.diagnose = diagnose;
+            b.options.diagnose = diagnose;
+            let written = a.solve().unwrap();
+            let dual = super::super::spatial::dual_only(|| b.solve()).unwrap();
+            // Everything the report says, and the poses to rounding, whatever the freedom.
+            assert_eq!(written.outcome, dual.outcome, "{what}");
+            assert_eq!(written.dof, dual.dof, "{what}");
+            assert_eq!(written.iterations, dual.iterations, "{what}");
+            assert_eq!(written.conflicts, dual.conflicts, "{what}");
+            assert_eq!(written.redundant, dual.redundant, "{what}");
+            for (m, n) in written.mates.iter().zip(&dual.mates) {
+                assert_eq!((&m.id, m.status), (&n.id, n.status), "{what}");
+            }
+            for (c, d) in written.components.iter().zip(&dual.components) {
+                assert_eq!(c.dof, d.dof, "{what}: {}", c.name);
+                let (p, q) = (c.pose, d.pose);
+                for (x, y) in p.translation.iter().zip(q.translation) {
+                    assert!((x - y).abs() < 1e-9, "{what}: {}", c.name);
+                }
+                for (x, y) in p.rotation.iter().zip(q.rotation) {
+                    assert!((x - y).abs() < 1e-9, "{what}: {}", c.name);
+                }
+            }
+            outcomes.push(written.outcome);
+        }
+    }
+    for o in [Outcome::Okay, Outcome::RedundantOkay, Outcome::Inconsistent] {
+        assert!(outcomes.contains(&o), "a case ending {o}: {outcomes:?}");
+    }
+}
+
 #[test]
 fn assemblies_solve_as_with_own_unknowns() {
     let cases: Vec<(&str, Assembly)> = vec![
