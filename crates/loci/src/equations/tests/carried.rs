@@ -615,8 +615,7 @@ fn assembly_cases() -> Vec<(&'static str, Assembly)> {
         point: [0.0, 0.0, 0.0],
         normal: [0.0, 0.0, 1.0],
     };
-    let floor = Component::new("floor", Pose::IDENTITY).with("top", face.clone());
-    let mut floor = floor;
+    let mut floor = Component::new("floor", Pose::IDENTITY).with("top", face);
     floor.grounded = true;
     plate.add_component(floor).unwrap();
     plate
