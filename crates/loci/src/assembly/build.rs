@@ -12,7 +12,7 @@ use super::prim::{Body, Prim, D, L, P};
 use crate::{
     Constraint, ConstraintKind as K, Entity, EntityId, ModelError, Param, ParamId, System,
 };
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 /// Whether directions other than a body's z axis are written as lines from its origin
 /// instead of turned normals. Off: fewer unknowns, but Newton took five times the iterations
@@ -40,8 +40,9 @@ pub(crate) struct Built {
     pub sys: System,
     /// Per component: its pose parameters when it is free.
     pub poses: Vec<Option<PoseParams>>,
-    /// The mate (index) each constraint was written for.
-    pub owner: HashMap<u32, usize>,
+    /// The mate (index) each constraint was written for, by constraint handle (handles are
+    /// 1, 2, 3 ... in the order written: index 0 is unused).
+    pub owner: Vec<usize>,
 }
 
 struct Builder<'a> {
@@ -54,7 +55,7 @@ struct Builder<'a> {
     next_entity: u32,
     next_constraint: u32,
     cache: HashMap<(Body, u8, [u64; 3]), EntityId>,
-    owner: HashMap<u32, usize>,
+    owner: Vec<usize>,
 }
 
 /// Builds the system for `prims` (each with the index of its mate) at `poses`; `grounded`
@@ -76,8 +77,8 @@ pub(crate) fn build(
         next_param: 1,
         next_entity: 1,
         next_constraint: 1,
-        cache: HashMap::new(),
-        owner: HashMap::new(),
+        cache: HashMap::default(),
+        owner: vec![usize::MAX],
     };
     for (i, pose) in poses.iter().enumerate() {
         if grounded[i] {
@@ -269,7 +270,8 @@ impl Builder<'_> {
         let h = self.next_constraint;
         self.next_constraint += 1;
         self.sys.add_constraint(Constraint { h: h.into(), ..c })?;
-        self.owner.insert(h, mate);
+        debug_assert_eq!(self.owner.len(), h as usize);
+        self.owner.push(mate);
         Ok(())
     }
 

@@ -7,7 +7,7 @@ use super::error::AssemblyError;
 use super::mate::{Mate, MateKind, Selection};
 use super::math::{self, V3};
 use super::prim::{Body, Prim, D, L, P};
-use std::collections::HashMap;
+use rustc_hash::FxHashMap as HashMap;
 
 /// A selection resolved to its body and reference.
 #[derive(Clone, Debug)]

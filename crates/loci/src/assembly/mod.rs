@@ -189,14 +189,14 @@ impl Assembly {
     }
 
     fn check(&mut self) -> Result<(), AssemblyError> {
-        let mut names = std::collections::HashSet::new();
+        let mut names = rustc_hash::FxHashSet::default();
         for c in &self.components {
             check_component(c)?;
             if !names.insert(c.name.as_str()) {
                 return Err(AssemblyError::DuplicateComponent(c.name.clone()));
             }
         }
-        let mut counts = std::collections::HashMap::new();
+        let mut counts = rustc_hash::FxHashMap::default();
         for m in &mut self.mates {
             let n = counts.entry(m.kind.id_prefix()).or_insert(0usize);
             *n += 1;
@@ -205,7 +205,8 @@ impl Assembly {
             }
         }
         // Borrowed, not copied: every solve checks them.
-        let mut ids = std::collections::HashSet::with_capacity(self.mates.len());
+        let mut ids = rustc_hash::FxHashSet::default();
+        ids.reserve(self.mates.len());
         for m in &self.mates {
             if !ids.insert(m.id.as_str()) {
                 return Err(AssemblyError::DuplicateMate(m.id.clone()));
@@ -226,7 +227,7 @@ impl Assembly {
     fn compile_all(&mut self) -> Vec<Result<Vec<Prim>, AssemblyError>> {
         let poses = self.poses();
         let (components, world) = (&self.components, &self.world);
-        let index: std::collections::HashMap<&str, usize> = components
+        let index: rustc_hash::FxHashMap<&str, usize> = components
             .iter()
             .enumerate()
             .map(|(i, c)| (c.name.as_str(), i))
@@ -244,8 +245,8 @@ impl Assembly {
             })
             .collect();
         // Angle mates last: a hinge's axis is the natural reference axis of an angle about it.
-        let mut hints: std::collections::HashMap<(prim::Body, prim::Body), Vec<_>> =
-            std::collections::HashMap::new();
+        let mut hints: rustc_hash::FxHashMap<(prim::Body, prim::Body), Vec<_>> =
+            rustc_hash::FxHashMap::default();
         for p in out.iter().flatten().flatten() {
             if let Prim::Parallel(a, b, _) = p {
                 let key = if a.body <= b.body {
@@ -375,7 +376,7 @@ impl Assembly {
             None
         };
         let mate_of = |m: &Member| match m {
-            Member::Constraint(c) => owner.get(&c.0).copied(),
+            Member::Constraint(c) => owner.get(c.0 as usize).copied().filter(|&m| m != usize::MAX),
             Member::Entity(_) => None,
         };
         let ids: Vec<String> = self.mates.iter().map(|m| m.id.clone()).collect();

@@ -31,6 +31,11 @@ pub(super) fn jacobian(
         EqKind::ArcRadii => arc_radii(e, x, active, res, jac),
         EqKind::Constraint(K::PtOnLine) => pt_line(e, x, active, res, jac, false),
         EqKind::Constraint(K::PtLineDistance) => pt_line(e, x, active, res, jac, true),
+        // In space, on points and normals a pose carries (an assembly's mates).
+        EqKind::Constraint(
+            K::PointsCoincident | K::Parallel | K::Perpendicular | K::ProjPtDistance,
+        )
+        | EqKind::UnitQuaternion => super::spatial::jacobian(e, x, active, res, jac),
         // Horizontal and vertical on points of the workplane never reach a kernel of the
         // solve: they are parameter equalities, removed by substitution.
         _ => false,

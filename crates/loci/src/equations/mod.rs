@@ -18,6 +18,7 @@ mod orientation;
 mod planar;
 mod points;
 pub(crate) mod refs;
+pub(crate) mod spatial;
 
 pub(crate) use carried::Carried;
 pub(crate) use compile::{compile_group, compile_unmerged, compile_unmerged_only, Kernel, Link};

@@ -341,6 +341,17 @@ fn jacobian(eq: &Equation, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
     (r, j)
 }
 
+/// Entries equal to rounding (relative to 1 + the entry).
+fn assert_close_all(got: &[f64], want: &[f64], what: &str) {
+    assert_eq!(got.len(), want.len(), "{what}");
+    for (a, b) in got.iter().zip(want) {
+        assert!(
+            (a - b).abs() <= 1e-12 * (1.0 + b.abs()),
+            "{what}: {got:?} vs {want:?}"
+        );
+    }
+}
+
 #[test]
 fn derivatives_through_the_carrier_are_those_of_the_composition() {
     let v0 = values(&linked());
@@ -416,11 +427,13 @@ fn derivatives_through_the_carrier_are_those_of_the_composition() {
                     );
                 }
             }
-            // The written-out forms, where a kind has one, agree with the dual numbers.
+            // The written-out forms, where a kind has one, agree with the dual numbers to
+            // rounding.
             let active: Vec<u16> = (0..xn.len() as u16).collect();
             let (mut rf, mut jf) = (vec![0.0; rn.len()], vec![0.0; jn.len()]);
             new.jacobian_active(&xn, &active, &mut rf, &mut jf);
-            assert_eq!((&rf, &jf), (&rn, &jn), "{what}");
+            assert_close_all(&rf, &rn, what);
+            assert_close_all(&jf, &jn, what);
             // And central differences.
             let h = 1e-6;
             for s in 0..xn.len() {
@@ -594,6 +607,86 @@ fn same_assembly(what: &str, new: &AssemblyReport, old: &AssemblyReport, diagnos
     }
 }
 
+/// The assemblies of [`assemblies_solve_as_with_own_unknowns`] and one whose mates hold a
+/// face: every kind the written-out derivatives cover, a conflict and a redundancy.
+fn assembly_cases() -> Vec<(&'static str, Assembly)> {
+    let mut plate = chain(3, &[]);
+    let face = Reference::Face {
+        point: [0.0, 0.0, 0.0],
+        normal: [0.0, 0.0, 1.0],
+    };
+    let mut floor = Component::new("floor", Pose::IDENTITY).with("top", face);
+    floor.grounded = true;
+    plate.add_component(floor).unwrap();
+    plate
+        .add_mate(Mate::new(
+            MateKind::Coincident,
+            Selection::on("link2", "tip"),
+            Selection::on("floor", "top"),
+        ))
+        .unwrap();
+    vec![
+        ("a chain of six links", chain(6, &[])),
+        (
+            "a second angle between the same arms conflicts",
+            chain(
+                3,
+                &[(MateKind::Angle { degrees: 45.0 }, (1, "arm"), (2, "arm"))],
+            ),
+        ),
+        (
+            "a distance the chain already holds is redundant",
+            chain(
+                4,
+                &[(
+                    MateKind::Distance { value: 1.0 },
+                    (1, "pivot"),
+                    (2, "pivot"),
+                )],
+            ),
+        ),
+        ("a chain whose last tip rests on a grounded face", plate),
+    ]
+}
+
+#[test]
+fn written_out_derivatives_solve_assemblies_as_the_dual_numbers_do() {
+    let mut outcomes = Vec::new();
+    for (what, asm) in assembly_cases() {
+        for diagnose in [false, true] {
+            let mut a = asm.clone();
+            let mut b = asm.clone();
+            a.options.diagnose = diagnose;
+            b.options.diagnose = diagnose;
+            let written = a.solve().unwrap();
+            let dual = super::super::spatial::dual_only(|| b.solve()).unwrap();
+            // Everything the report says, and the poses to rounding, whatever the freedom.
+            assert_eq!(written.outcome, dual.outcome, "{what}");
+            assert_eq!(written.dof, dual.dof, "{what}");
+            assert_eq!(written.iterations, dual.iterations, "{what}");
+            assert_eq!(written.conflicts, dual.conflicts, "{what}");
+            assert_eq!(written.redundant, dual.redundant, "{what}");
+            for (m, n) in written.mates.iter().zip(&dual.mates) {
+                assert_eq!((&m.id, m.status), (&n.id, n.status), "{what}");
+            }
+            for (c, d) in written.components.iter().zip(&dual.components) {
+                assert_eq!(c.dof, d.dof, "{what}: {}", c.name);
+                let (p, q) = (c.pose, d.pose);
+                for (x, y) in p.translation.iter().zip(q.translation) {
+                    assert!((x - y).abs() < 1e-9, "{what}: {}", c.name);
+                }
+                for (x, y) in p.rotation.iter().zip(q.rotation) {
+                    assert!((x - y).abs() < 1e-9, "{what}: {}", c.name);
+                }
+            }
+            outcomes.push(written.outcome);
+        }
+    }
+    for o in [Outcome::Okay, Outcome::RedundantOkay, Outcome::Inconsistent] {
+        assert!(outcomes.contains(&o), "a case ending {o}: {outcomes:?}");
+    }
+}
+
 #[test]
 fn assemblies_solve_as_with_own_unknowns() {
     let cases: Vec<(&str, Assembly)> = vec![
@@ -645,4 +738,105 @@ fn a_carried_point_is_no_larger_than_a_point_of_a_workplane() {
         "{} against {p2}",
         std::mem::size_of::<PointRef>()
     );
+}
+
+/// The constraints of [`cases`] and the other kinds whose derivatives through a carrier are
+/// written out (`equations/spatial.rs`): directions of a turned normal, of a line between
+/// carried points and of a constant normal, parallel and perpendicular; distances along them.
+fn spatial_constraints() -> Vec<Constraint> {
+    let c = |h: u32, k: K| Constraint::new(h, MOVING, k);
+    let mut all: Vec<Constraint> = cases().into_iter().flat_map(|(_, cs)| cs).collect();
+    all.extend([
+        c(10, K::Parallel).with_entities([TURNED, POSE, 0, 0]),
+        c(11, K::Parallel).with_entities([300, N, 0, 0]),
+        c(12, K::Perpendicular).with_entities([TURNED, N, 0, 0]),
+        c(13, K::Perpendicular).with_entities([POSE, 300, 0, 0]),
+        c(14, K::ProjPtDistance)
+            .with_points(AT_Y, AT_X)
+            .with_entities([300, 0, 0, 0])
+            .with_val(0.5),
+        c(15, K::ProjPtDistance)
+            .with_points(SHIFTED, A)
+            .with_entities([POSE, 0, 0, 0]),
+        c(16, K::PointsCoincident).with_points(SHIFTED, AT_Y),
+    ]);
+    for (i, c) in all.iter_mut().enumerate() {
+        c.h = (1 + i as u32).into();
+    }
+    all
+}
+
+proptest::proptest! {
+    /// At any pose (its quaternion not quite of unit length, so that its own equation does
+    /// not hold either), every equation of the group written out by hand has the residuals
+    /// of the generic evaluation to the last bit and the dual numbers' derivatives to
+    /// rounding, over all its slots and over some of them (others constants, as in a solve
+    /// that merged or fixed them).
+    #[test]
+    fn written_out_derivatives_through_a_pose_match_dual_numbers(
+        t in proptest::array::uniform3(-3.0..3.0f64),
+        axis in proptest::array::uniform3(-1.0..1.0f64),
+        angle in -3.1..3.1f64,
+        scale in 0.9..1.1f64,
+    ) {
+        let mut sys = system(&spatial_constraints());
+        let axis = if axis.iter().all(|v| v.abs() < 1e-3) { [0.0, 0.0, 1.0] } else { axis };
+        let q = axis_angle(axis, angle).map(|v| v * scale);
+        let pose = sys.entity(EntityId(POSE)).unwrap().kind.params().to_vec();
+        for (p, v) in pose.iter().zip(q) {
+            sys.set_value(*p, v);
+        }
+        let Some(crate::model::EntityKind::PointNRotTrans { translation, .. }) =
+            sys.entity(EntityId(AT_ORIGIN)).map(|e| e.kind.clone())
+        else {
+            unreachable!("a moved point")
+        };
+        for (p, v) in translation.iter().zip(t) {
+            sys.set_value(*p, v);
+        }
+        let v = values(&sys);
+        let compiled = compile_group(&sys, GroupId(MOVING), &[], true, &v).unwrap();
+        let (mut written, mut covered) = (0, 0);
+        for k in &compiled.kernels {
+            use super::super::EqKind;
+            if matches!(
+                k.eq.kind,
+                EqKind::UnitQuaternion
+                    | EqKind::Constraint(
+                        K::PointsCoincident | K::Parallel | K::Perpendicular | K::ProjPtDistance
+                    )
+            ) {
+                covered += 2;
+            }
+            let mut x = Vec::new();
+            k.gather(&v, &mut x);
+            let all: Vec<u16> = (0..x.len() as u16).collect();
+            let some: Vec<u16> = all.iter().copied().filter(|s| s % 3 != 1).collect();
+            for active in [all, some] {
+                let rows = k.rows;
+                let (mut rf, mut jf) = (vec![0.0; rows], vec![0.0; rows * active.len()]);
+                let (mut rd, mut jd) = (vec![0.0; rows], vec![0.0; rows * active.len()]);
+                if !super::super::fast::jacobian(&k.eq, &x, &active, &mut rf, &mut jf) {
+                    continue;
+                }
+                written += 1;
+                k.eq.jacobian_dual(&x, &active, &mut rd, &mut jd);
+                let what = format!("{:?}", k.owner);
+                // The residuals are the generic `f64` evaluation's (the dual numbers' value
+                // parts may divide differently, by an ulp).
+                let mut generic = Rows::new();
+                k.eq.eval(&x, &mut generic);
+                proptest::prop_assert_eq!(
+                    rf.iter().map(|r| r.to_bits()).collect::<Vec<_>>(),
+                    generic.v[..rows].iter().map(|r| r.to_bits()).collect::<Vec<_>>(),
+                    "{}", what
+                );
+                assert_close_all(&rf, &rd, &what);
+                assert_close_all(&jf, &jd, &what);
+            }
+        }
+        // Every such constraint and the pose's unit quaternion, none left to the dual numbers.
+        proptest::prop_assert_eq!(written, covered);
+        proptest::prop_assert!(covered >= 2 * 12);
+    }
 }
