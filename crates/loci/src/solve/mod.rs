@@ -22,7 +22,10 @@ pub(crate) mod rank;
 mod report;
 #[cfg(test)]
 mod slide_tests;
+#[cfg(test)]
+mod unknowns_tests;
 mod substitute;
+mod unknowns;
 
 pub use config::Config;
 pub(crate) use gram::MAX_PRODUCTS;
