@@ -442,7 +442,7 @@ fn solve_values(
         let comp = &cache.components[ci];
         report.iterations = report.iterations.max(fin.iterations);
         report.residual = report.residual.max(fin.residual);
-        rank_total += comp.rows - fin.dropped.len();
+        rank_total += comp.rows - fin.dependent;
         let owner_of = |row: usize| {
             let (b, _) = comp.row_block[row];
             kernels[comp.blocks[b as usize].kernel].owner

@@ -3,6 +3,7 @@
 
 use super::gram::{Columns, Gram};
 use super::rank;
+use super::unknowns::Reached;
 use super::Config;
 use crate::equations::Kernel;
 use crate::equations::Rows;
@@ -46,6 +47,9 @@ pub(crate) struct Finish {
     pub iterations: usize,
     /// Rows whose equations depend on others at the final point.
     pub dropped: Vec<usize>,
+    /// How many rows depend on the others: `dropped.len()`, or, where the rank was read from
+    /// `Jᵀ J` (see `solve::unknowns`) and `dropped` left empty, the rows less the rank.
+    pub dependent: usize,
     /// For each dropped row: the rows it depends on (itself included).
     pub dependencies: Vec<Vec<usize>>,
     /// Rows whose residual is above tolerance at the end.
@@ -574,6 +578,7 @@ impl Component {
                 converged: false,
                 iterations: 0,
                 dropped: Vec::new(),
+                dependent: 0,
                 dependencies: Vec::new(),
                 unsatisfied: Vec::new(),
                 residual: f64::NAN,
@@ -591,7 +596,8 @@ impl Component {
         let mut before = 0;
         if self.by_unknowns(ncols, cfg) {
             match self.solve_by_unknowns(kernels, x, values, cfg) {
-                Some(steps) => before = steps,
+                Some(Reached::Finished(fin)) => return fin,
+                Some(Reached::Solution(steps)) => before = steps,
                 None => x.copy_from_slice(&x0[..]),
             }
         }
@@ -1047,6 +1053,7 @@ impl Component {
             converged,
             iterations: before + iterations,
             dropped: Vec::new(),
+            dependent: 0,
             dependencies: Vec::new(),
             unsatisfied: (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect(),
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
@@ -1068,6 +1075,7 @@ impl Component {
             // No factorisation: count every row as unresolved.
             fin.dropped = (0..m).collect();
         }
+        fin.dependent = fin.dropped.len();
         fin
     }
 }

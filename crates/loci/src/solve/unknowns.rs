@@ -20,9 +20,18 @@
 //! through `G` with the slide folded in.
 
 use super::gram::Gram;
-use super::newton::{Component, PROJECTED, SLIDE_NOISE};
+use super::newton::{generic, Component, Finish, PROJECTED, SLIDE_NOISE};
+use super::rank::{DEPENDENCY_BLOCK, UNION_PROBES};
 use super::Config;
 use crate::equations::Kernel;
+
+/// Where [`Component::solve_by_unknowns`] ended.
+pub(crate) enum Reached {
+    /// A solution, after this many steps; the rank is still to be read.
+    Solution(usize),
+    /// A solution and its rank, read from `K` (see [`Component::solve_by_unknowns`]).
+    Finished(Finish),
+}
 
 /// The most free directions a step is moved along (each costs a solve with `K` and a column
 /// of a small dense system); a component with more is left to [`Component::solve`] (a truss,
@@ -49,15 +58,24 @@ impl Component {
     }
 
     /// Gauss-Newton steps through `K = Jᵀ J` from `x` to a solution nearest the drawing `x`
-    /// started at. Returns the steps taken, with `x` at the solution; `None` (with `x` wherever
-    /// the steps left it) when they did not reach one.
+    /// started at, with `x` left there; `None` (with `x` wherever the steps left it) when they
+    /// did not reach one.
+    ///
+    /// At the solution, when more rows depend on the others than [`Component::solve`] would
+    /// name one by one (it then names the rows on every circuit through a dependent one, the
+    /// support of `J`'s left null space, whichever rows its elimination dropped), the rank and
+    /// those rows are read from `K`, and the solve is [`Reached::Finished`]: the rank is the
+    /// unknowns less the columns `K` drops, and for a generic `w` the part of `w` outside the
+    /// span of `J`'s columns, `w - J u` with `K u = Jᵀ w`, is a generic vector of the left
+    /// null space, whose support is those rows. `J Jᵀ`, a third larger than `K` on a mesh and
+    /// factorised twice by the rank test, is then not built at all.
     pub(super) fn solve_by_unknowns(
         &mut self,
         kernels: &[Kernel],
         x: &mut [f64],
         values: &[f64],
         cfg: &Config,
-    ) -> Option<usize> {
+    ) -> Option<Reached> {
         if self.unknowns.is_none() {
             self.unknowns = Some(Gram::of_unknowns(self.rows, &self.columns));
         }
@@ -76,7 +94,7 @@ impl Component {
         values: &[f64],
         cfg: &Config,
         k: &mut Gram,
-    ) -> Option<usize> {
+    ) -> Option<Reached> {
         let (m, ncols) = (self.rows, x.len());
         let mut xs = Vec::new();
         let mut jl = Vec::new();
@@ -105,7 +123,7 @@ impl Component {
             let finite = r.iter().all(|v| v.is_finite());
             let holds = finite && r.iter().all(|v| v.abs() <= cfg.tolerance);
             if holds && (settled || steps == 0) {
-                return Some(steps);
+                return Some(self.rank_by_unknowns(k, &jn, &r, steps, cfg));
             }
             // An equation without a gradient where it does not hold is nudged by the other
             // solve; so is anything not finite.
@@ -228,6 +246,76 @@ impl Component {
                 || (last_move <= SLIDE_NOISE && last_move >= 0.5 * before);
         }
         None
+    }
+}
+
+impl Component {
+    /// At a solution with Jacobian `jn` and residuals `r`, reached in `steps`: the rank and
+    /// the rows on circuits from `K`, or only the solution when too few rows depend on others
+    /// (see [`Component::solve_by_unknowns`]).
+    fn rank_by_unknowns(
+        &self,
+        k: &mut Gram,
+        jn: &[f64],
+        r: &[f64],
+        steps: usize,
+        cfg: &Config,
+    ) -> Reached {
+        let (m, ncols) = (self.rows, self.columns.len());
+        if !cfg.find_failed || m <= ncols + DEPENDENCY_BLOCK {
+            return Reached::Solution(steps);
+        }
+        k.assemble(jn);
+        if !k.factor(0.0, cfg.rank_tolerance) {
+            return Reached::Solution(steps);
+        }
+        let free = k.dropped();
+        let dependent = m - (ncols - free.len());
+        if dependent <= DEPENDENCY_BLOCK {
+            return Reached::Solution(steps);
+        }
+        let columns = &self.columns;
+        // Jᵀ w for generic weights w, one right-hand side per probe.
+        let mut u = vec![0.0; ncols * UNION_PROBES];
+        for (p, up) in u.chunks_mut(ncols).enumerate() {
+            for (c, col) in columns.iter().enumerate() {
+                up[c] = col
+                    .iter()
+                    .map(|&(row, idx)| jn[idx as usize] * generic(row as usize, p))
+                    .sum();
+            }
+        }
+        k.solve_many(&mut u, UNION_PROBES);
+        let mut on_circuit = vec![false; m];
+        let mut y = vec![0.0; m];
+        for (p, up) in u.chunks_mut(ncols).enumerate() {
+            for &d in &free {
+                up[d] = 0.0;
+            }
+            for (i, yi) in y.iter_mut().enumerate() {
+                *yi = generic(i, p);
+            }
+            for (c, col) in columns.iter().enumerate() {
+                for &(row, idx) in col {
+                    y[row as usize] -= jn[idx as usize] * up[c];
+                }
+            }
+            for (o, v) in on_circuit.iter_mut().zip(&y) {
+                // As `rank::dependent_union` tells a coefficient from rounding.
+                *o |= !(v.abs() <= 1e-6);
+            }
+        }
+        let union: Vec<usize> = (0..m).filter(|&i| on_circuit[i]).collect();
+        Reached::Finished(Finish {
+            converged: true,
+            iterations: steps,
+            dropped: Vec::new(),
+            dependent,
+            dependencies: vec![union],
+            unsatisfied: Vec::new(),
+            residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
+            too_large: false,
+        })
     }
 }
 
