@@ -22,10 +22,10 @@ pub(crate) mod rank;
 mod report;
 #[cfg(test)]
 mod slide_tests;
-#[cfg(test)]
-mod unknowns_tests;
 mod substitute;
 mod unknowns;
+#[cfg(test)]
+mod unknowns_tests;
 
 pub use config::Config;
 pub(crate) use gram::MAX_PRODUCTS;

@@ -258,7 +258,13 @@ impl Component {
 
     /// Every local slot of every block, in `slot_col` order: constants from `values`, unknowns
     /// from `x`. Done once per solve; afterwards [`Component::load`] refreshes the unknowns.
-    pub(super) fn gather_all(&self, kernels: &[Kernel], x: &[f64], values: &[f64], xs: &mut Vec<f64>) {
+    pub(super) fn gather_all(
+        &self,
+        kernels: &[Kernel],
+        x: &[f64],
+        values: &[f64],
+        xs: &mut Vec<f64>,
+    ) {
         xs.clear();
         xs.resize(self.slot_col.len(), 0.0);
         for b in &self.blocks {

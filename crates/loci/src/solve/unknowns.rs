@@ -47,6 +47,10 @@ const MAX_STEPS: usize = 30;
 const SLOW: f64 = 0.5;
 const SLOW_STEPS: usize = 4;
 
+/// Columns of `K` are dropped at this multiple of the rank tolerance (see
+/// [`Component::rank_by_unknowns`]), as `rank::reveal` looks again at rows of `J Jᵀ`.
+const SUSPECT: f64 = 1e4;
+
 /// Halvings of a step before it counts as failed.
 const BACKTRACKS: usize = 12;
 
@@ -129,15 +133,17 @@ impl Component {
             // solve; so is anything not finite.
             if steps == MAX_STEPS
                 || !finite
-                || r
-                    .iter()
+                || r.iter()
                     .zip(&inv)
                     .any(|(&ri, &iv)| iv == 0.0 && ri.abs() > cfg.tolerance)
             {
                 return None;
             }
             k.assemble(&jn);
-            if !k.factor(0.0, cfg.rank_tolerance) {
+            // At the wider tolerance: a free direction's pivot carries the rounding of every
+            // elimination before it, and can land above the rank tolerance (a 30x30 mesh kept
+            // its rotation's), leaving the step to swing along it instead of sliding.
+            if !k.factor(0.0, cfg.rank_tolerance * SUSPECT) {
                 return None;
             }
             let dropped = k.dropped();
@@ -158,32 +164,8 @@ impl Component {
                 u[d] = 0.0;
             }
             if !dropped.is_empty() {
-                // Each free direction: 1 on its dropped unknown, the kept ones moving so that
-                // no equation changes, K_kk v_k = -K_kd.
                 let nf = dropped.len();
-                free.clear();
-                free.resize(nf * ncols, 0.0);
-                for (f, &d) in dropped.iter().enumerate() {
-                    t.fill(0.0);
-                    for &(row, idx) in columns.col(d) {
-                        t[row as usize] += jn[idx as usize];
-                    }
-                    let v = &mut free[f * ncols..(f + 1) * ncols];
-                    for (c, col) in columns.iter().enumerate() {
-                        let mut acc = 0.0;
-                        for &(row, idx) in col {
-                            acc -= jn[idx as usize] * t[row as usize];
-                        }
-                        v[c] = acc;
-                    }
-                }
-                k.solve_many(&mut free, nf);
-                for (f, v) in free.chunks_mut(ncols).enumerate() {
-                    for &d in &dropped {
-                        v[d] = 0.0;
-                    }
-                    v[dropped[f]] = 1.0;
-                }
+                self.free_directions(k, &jn, &dropped, &mut free, &mut t);
                 // Along them to the point nearest the drawing: u + V a, with
                 // (Vᵀ V) a = Vᵀ (z - u) and z the drawing in scaled unknowns.
                 let mut a = vec![0.0; nf * nf];
@@ -242,14 +224,52 @@ impl Component {
                 f64::INFINITY
             };
             // As the folded slide settles (see `Component::solve`).
-            settled = last_move <= PROJECTED
-                || (last_move <= SLIDE_NOISE && last_move >= 0.5 * before);
+            settled =
+                last_move <= PROJECTED || (last_move <= SLIDE_NOISE && last_move >= 0.5 * before);
         }
         None
     }
 }
 
 impl Component {
+    /// Into `free` (`dropped.len()` vectors of the unknowns, one after another), each
+    /// direction in which the equations do not move, from `k` factorised with the columns
+    /// `dropped` dropped: 1 on its dropped unknown, 0 on the others, the kept ones moving so
+    /// that no equation changes, `K_kk v_k = -K_kd`. `t` is work space of one per row.
+    fn free_directions(
+        &self,
+        k: &mut Gram,
+        jn: &[f64],
+        dropped: &[usize],
+        free: &mut Vec<f64>,
+        t: &mut [f64],
+    ) {
+        let (ncols, columns) = (self.columns.len(), &self.columns);
+        free.clear();
+        free.resize(dropped.len() * ncols, 0.0);
+        for (f, &d) in dropped.iter().enumerate() {
+            t.fill(0.0);
+            for &(row, idx) in columns.col(d) {
+                t[row as usize] += jn[idx as usize];
+            }
+            let v = &mut free[f * ncols..(f + 1) * ncols];
+            for (c, col) in columns.iter().enumerate() {
+                let mut acc = 0.0;
+                for &(row, idx) in col {
+                    acc -= jn[idx as usize] * t[row as usize];
+                }
+                v[c] = acc;
+            }
+        }
+        k.solve_many(free, dropped.len());
+        for (f, v) in free.chunks_mut(ncols).enumerate() {
+            for &d in dropped {
+                v[d] = 0.0;
+            }
+            v[dropped[f]] = 1.0;
+        }
+    }
+
     /// At a solution with Jacobian `jn` and residuals `r`, reached in `steps`: the rank and
     /// the rows on circuits from `K`, or only the solution when too few rows depend on others
     /// (see [`Component::solve_by_unknowns`]).
@@ -266,10 +286,35 @@ impl Component {
             return Reached::Solution(steps);
         }
         k.assemble(jn);
-        if !k.factor(0.0, cfg.rank_tolerance) {
+        // As `rank::reveal` reads `J Jᵀ`: the columns dropped at a tolerance wider than the
+        // rank tolerance are candidates, each confirmed by measuring its free direction `v`
+        // in `J` itself, `‖J v‖² <= eps ‖v‖²`, where rounding is not squared. Where one is not
+        // confirmed, `J Jᵀ` decides.
+        let eps = cfg.rank_tolerance;
+        if !k.factor(0.0, eps * SUSPECT) {
             return Reached::Solution(steps);
         }
         let free = k.dropped();
+        if free.len() > MAX_FREE {
+            return Reached::Solution(steps);
+        }
+        if !free.is_empty() {
+            let (mut dirs, mut t) = (Vec::new(), vec![0.0; m]);
+            self.free_directions(k, jn, &free, &mut dirs, &mut t);
+            for v in dirs.chunks(ncols) {
+                t.fill(0.0);
+                for (c, col) in self.columns.iter().enumerate() {
+                    for &(row, idx) in col {
+                        t[row as usize] += jn[idx as usize] * v[c];
+                    }
+                }
+                let jv: f64 = t.iter().map(|a| a * a).sum();
+                let vv: f64 = v.iter().map(|a| a * a).sum();
+                if !(jv <= eps * vv) {
+                    return Reached::Solution(steps);
+                }
+            }
+        }
         let dependent = m - (ncols - free.len());
         if dependent <= DEPENDENCY_BLOCK {
             return Reached::Solution(steps);

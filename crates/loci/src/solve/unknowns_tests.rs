@@ -35,6 +35,18 @@ enum Variant {
 /// diagonal and a distance on every edge (a mesh: one rotation free), else a distance on every
 /// bar and one diagonal bracing the first cell (a truss, a mechanism).
 fn lattice(n: usize, seed: u64, off: f64, triangles: bool, variant: Variant) -> System {
+    lattice_pinned(n, seed, off, triangles, variant, false)
+}
+
+/// [`lattice`], with the first point held where dragged instead of fixed when `dragged`.
+fn lattice_pinned(
+    n: usize,
+    seed: u64,
+    off: f64,
+    triangles: bool,
+    variant: Variant,
+    dragged: bool,
+) -> System {
     let mut rng = Rng(seed);
     let mut sys = System::new();
     sys.add_xy_workplane(1, 1, [101, 102, WP]).unwrap();
@@ -48,7 +60,7 @@ fn lattice(n: usize, seed: u64, off: f64, triangles: bool, variant: Variant) -> 
         } else {
             (off * rng.next(), off * rng.next())
         };
-        let group = if k == 0 { 1 } else { G };
+        let group = if k == 0 && !dragged { 1 } else { G };
         let (u, v) = (1000 + 2 * k as u32, 1001 + 2 * k as u32);
         sys.add_param(Param::new(u, group, p[0] + dx)).unwrap();
         sys.add_param(Param::new(v, group, p[1] + dy)).unwrap();
@@ -94,7 +106,11 @@ fn lattice(n: usize, seed: u64, off: f64, triangles: bool, variant: Variant) -> 
             _ => (at(0, 0), at(1, 1)),
         };
         let (a, b) = (true_pts[other.0], true_pts[other.1]);
-        let extra = if variant == Variant::Inconsistent { 1.0 } else { 0.0 };
+        let extra = if variant == Variant::Inconsistent {
+            1.0
+        } else {
+            0.0
+        };
         bars.push(other);
         lengths.push((a[0] - b[0]).hypot(a[1] - b[1]) + extra);
     }
@@ -104,6 +120,12 @@ fn lattice(n: usize, seed: u64, off: f64, triangles: bool, variant: Variant) -> 
             .with_points(300 + p as u32, 300 + q as u32)
             .with_val(len);
         sys.add_constraint(con).unwrap();
+    }
+    if dragged {
+        let pin = Constraint::new(bars.len() as u32 + 1, G, K::WhereDragged)
+            .in_workplane(Some(WP))
+            .with_points(300, 0);
+        sys.add_constraint(pin).unwrap();
     }
     sys
 }
@@ -123,7 +145,11 @@ fn run(start: &System, cfg: &Config) -> (Report, Vec<f64>) {
 
 /// The distance from the drawing to `values`.
 fn moved(start: &System, values: &[f64]) -> f64 {
-    let x0 = start.params().iter().filter(|p| p.group.0 == G).map(|p| p.val);
+    let x0 = start
+        .params()
+        .iter()
+        .filter(|p| p.group.0 == G)
+        .map(|p| p.val);
     x0.zip(values)
         .map(|(a, b)| (a - b) * (a - b))
         .sum::<f64>()
@@ -185,7 +211,10 @@ fn check_same(start: &System, what: &str) -> Report {
             .iter()
             .zip(&xb)
             .fold(0.0f64, |s, (p, q)| s.max((p - q).abs()));
-        assert!(largest <= 1e-7 * scale, "{what}: the solutions differ by {largest}");
+        assert!(
+            largest <= 1e-7 * scale,
+            "{what}: the solutions differ by {largest}"
+        );
         // And no farther from the drawing (the steps through `Jᵀ J` settle at least as close
         // to the nearest solution).
         let (ma, mb) = (moved(start, &xa), moved(start, &xb));
@@ -199,12 +228,23 @@ fn check_same(start: &System, what: &str) -> Report {
 
 #[test]
 fn meshes_solved_through_the_unknowns_side_end_as_through_the_equations() {
-    for (n, seed, off) in [(6, 1, 0.6), (10, 2, 0.6), (20, 3, 0.6), (20, 4, 2.0), (30, 5, 0.6)] {
+    for (n, seed, off) in [
+        (6, 1, 0.6),
+        (10, 2, 0.6),
+        (20, 3, 0.6),
+        (20, 4, 2.0),
+        (30, 5, 0.6),
+        (30, 4, 0.1),
+    ] {
         for variant in [Variant::Solvable, Variant::Redundant] {
             let what = format!("{n}x{n} mesh, seed {seed}, {variant:?}");
-            let rep = check_same(&lattice(n, seed, off, true, variant), &what);
-            assert_eq!(rep.outcome, Outcome::RedundantOkay, "{what}: {rep:?}");
-            assert_eq!(rep.dof, 1, "{what}: only the rotation about the pin");
+            for dragged in [false, true] {
+                let start = lattice_pinned(n, seed, off, true, variant, dragged);
+                let what = format!("{what}, pin dragged {dragged}");
+                let rep = check_same(&start, &what);
+                assert_eq!(rep.outcome, Outcome::RedundantOkay, "{what}: {rep:?}");
+                assert_eq!(rep.dof, 1, "{what}: only the rotation about the pin");
+            }
         }
     }
 }
