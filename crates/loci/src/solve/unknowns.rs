@@ -127,7 +127,10 @@ impl Component {
             let finite = r.iter().all(|v| v.is_finite());
             let holds = finite && r.iter().all(|v| v.abs() <= cfg.tolerance);
             if holds && (settled || steps == 0) {
-                return Some(self.rank_by_unknowns(k, &jn, &r, steps, cfg));
+                // The last step moved the unknowns by no more than `PROJECTED`: `K` as
+                // factorised for it is `K` here but for rounding-sized changes.
+                let current = steps > 0 && last_move <= PROJECTED;
+                return Some(self.rank_by_unknowns(k, current, &jn, &r, steps, cfg));
             }
             // An equation without a gradient where it does not hold is nudged by the other
             // solve; so is anything not finite.
@@ -272,10 +275,14 @@ impl Component {
 
     /// At a solution with Jacobian `jn` and residuals `r`, reached in `steps`: the rank and
     /// the rows on circuits from `K`, or only the solution when too few rows depend on others
-    /// (see [`Component::solve_by_unknowns`]).
+    /// (see [`Component::solve_by_unknowns`]). With `current`, `k` is already factorised at
+    /// the wider tolerance at a point closer to this one than anything the tests below tell
+    /// apart (a free direction is measured to about `1e-9` against `eps`; a row's share of
+    /// the left null space to about `1e-9` against `1e-6`).
     fn rank_by_unknowns(
         &self,
         k: &mut Gram,
+        current: bool,
         jn: &[f64],
         r: &[f64],
         steps: usize,
@@ -285,14 +292,16 @@ impl Component {
         if !cfg.find_failed || m <= ncols + DEPENDENCY_BLOCK {
             return Reached::Solution(steps);
         }
-        k.assemble(jn);
         // As `rank::reveal` reads `J Jᵀ`: the columns dropped at a tolerance wider than the
         // rank tolerance are candidates, each confirmed by measuring its free direction `v`
         // in `J` itself, `‖J v‖² <= eps ‖v‖²`, where rounding is not squared. Where one is not
         // confirmed, `J Jᵀ` decides.
         let eps = cfg.rank_tolerance;
-        if !k.factor(0.0, eps * SUSPECT) {
-            return Reached::Solution(steps);
+        if !current {
+            k.assemble(jn);
+            if !k.factor(0.0, eps * SUSPECT) {
+                return Reached::Solution(steps);
+            }
         }
         let free = k.dropped();
         if free.len() > MAX_FREE {
