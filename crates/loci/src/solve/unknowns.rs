@@ -85,7 +85,10 @@ impl Component {
         }
         // Out of the component while its steps use the component's equations.
         let mut k = self.unknowns.take()?;
-        let steps = self.steps_by_unknowns(kernels, x, values, cfg, k.as_mut()?);
+        let steps = match k.as_mut() {
+            Some(k) => self.steps_by_unknowns(kernels, x, values, cfg, k),
+            None => None,
+        };
         self.unknowns = Some(k);
         steps
     }
