@@ -278,6 +278,47 @@ fn trusses_are_solved_as_through_the_equations() {
     }
 }
 
+#[test]
+fn a_mesh_with_a_dragged_point_ends_as_through_the_equations() {
+    // The far corner dragged off where the distances allow: its unknowns weigh less in the
+    // nearest solution (columns scaled), in both paths alike.
+    let n = 12;
+    let mut start = lattice(n, 21, 0.6, true, Variant::Solvable);
+    let k = n * n - 1;
+    let (u, v) = (1000 + 2 * k as u32, 1001 + 2 * k as u32);
+    for p in start.params_mut() {
+        if p.h.0 == u || p.h.0 == v {
+            p.val += 3.0;
+        }
+    }
+    let dragged = [crate::model::ParamId(u), crate::model::ParamId(v)];
+    let solve_with = |cfg: &Config| {
+        let mut sys = start.clone();
+        let report = solve(&mut sys, G.into(), &dragged, cfg).unwrap();
+        let values: Vec<f64> = sys
+            .params()
+            .iter()
+            .filter(|p| p.group.0 == G)
+            .map(|p| p.val)
+            .collect();
+        (report, values)
+    };
+    let rows_only = Config {
+        unknowns_side: false,
+        ..Config::default()
+    };
+    let (a, xa) = solve_with(&Config::default());
+    let (b, xb) = solve_with(&rows_only);
+    assert_eq!(a.outcome, Outcome::RedundantOkay, "{a:?}");
+    assert_eq!((a.outcome, a.dof, &a.failed), (b.outcome, b.dof, &b.failed));
+    assert!(a.residual <= 1e-10);
+    let largest = xa
+        .iter()
+        .zip(&xb)
+        .fold(0.0f64, |s, (p, q)| s.max((p - q).abs()));
+    assert!(largest <= 1e-7 * 120.0, "the solutions differ by {largest}");
+}
+
 /// A 70x70 mesh whose corner points have two distances each: through `J Jᵀ` alone, three of
 /// those distances were named redundant, which the drawing without any of them disproves
 /// (its DOF rises); through `Jᵀ J` they are not named, and the rest is as before.
