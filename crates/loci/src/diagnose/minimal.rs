@@ -235,6 +235,13 @@ fn solve_set(
             v + nudge * (1.0 + v.abs()) * (((i as f64 + 1.0) * 0.618_034).fract() - 0.5)
         })
         .collect();
+    // Through `J Jᵀ` alone, as a set was always judged: which parts fail is what names a
+    // conflict, and steps through `Jᵀ J` (`solve::unknowns`) could carry a part from a start
+    // where these fail to a solution; on a failing part they only add steps before giving way.
+    let cfg = &Config {
+        unknowns_side: false,
+        ..cfg.clone()
+    };
     let fin = comp.solve(defs, &mut x, values, cfg, scratch);
     if fin.too_large {
         return Alone::TooLarge;

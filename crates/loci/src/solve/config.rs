@@ -59,6 +59,9 @@ pub struct Config {
     /// before, refined, instead of a fresh one. The step is the same to the refinement's
     /// tolerance; the switch is kept to check that.
     pub(crate) reuse_factor: bool,
+    /// Whether a component with more equations than unknowns takes its steps through
+    /// `Jᵀ J` (see `solve::unknowns`); off, only through `J Jᵀ`, for tests that compare.
+    pub(crate) unknowns_side: bool,
     /// Whether a failed solve checks its verdict and names the sets that cannot hold (and,
     /// when none is shown to, builds the solution up one constraint at a time). Off only for a
     /// solve whose failure is followed by another solve of the same request, written
@@ -79,6 +82,7 @@ impl Default for Config {
             solvespace_angles: false,
             fold_slide: true,
             reuse_factor: true,
+            unknowns_side: true,
             name_conflicts: true,
         }
     }

@@ -288,6 +288,24 @@ impl Gram {
         SparseGram::new(nrows, pattern, sparse).map(|s| Gram::Sparse(Box::new(s)))
     }
 
+    /// `K = Jᵀ J` instead, over the unknowns (the columns of `J`, given as for [`Gram::new`]
+    /// with `nrows` rows): the normal equations of a least-squares step, for components with
+    /// more equations than unknowns. A pivot of `K` is the squared distance of a column of `J`
+    /// from the span of the columns eliminated before it, so the columns it drops are
+    /// directions in which the equations do not move the unknowns (a mechanism's freedom).
+    /// Built, assembled and solved as `G` is, the rows of `J` standing for its columns.
+    pub fn of_unknowns(nrows: usize, columns: &Columns) -> Option<Self> {
+        let (ptr, entries) = rows_of(nrows, columns);
+        if ptr[nrows] > u32::MAX as usize {
+            return None;
+        }
+        let transposed = Columns {
+            ptr: ptr.iter().map(|&p| p as u32).collect(),
+            entries,
+        };
+        Self::new(columns.len(), &transposed)
+    }
+
     /// Computes `G` from the Jacobian values `jv`.
     pub fn assemble(&mut self, jv: &[f64]) {
         match self {

@@ -23,6 +23,9 @@ mod report;
 #[cfg(test)]
 mod slide_tests;
 mod substitute;
+mod unknowns;
+#[cfg(test)]
+mod unknowns_tests;
 
 pub use config::Config;
 pub(crate) use gram::MAX_PRODUCTS;
@@ -439,7 +442,7 @@ fn solve_values(
         let comp = &cache.components[ci];
         report.iterations = report.iterations.max(fin.iterations);
         report.residual = report.residual.max(fin.residual);
-        rank_total += comp.rows - fin.dropped.len();
+        rank_total += comp.rows - fin.dependent;
         let owner_of = |row: usize| {
             let (b, _) = comp.row_block[row];
             kernels[comp.blocks[b as usize].kernel].owner

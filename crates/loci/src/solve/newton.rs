@@ -3,6 +3,7 @@
 
 use super::gram::{Columns, Gram};
 use super::rank;
+use super::unknowns::Reached;
 use super::Config;
 use crate::equations::Kernel;
 use crate::equations::Rows;
@@ -46,6 +47,9 @@ pub(crate) struct Finish {
     pub iterations: usize,
     /// Rows whose equations depend on others at the final point.
     pub dropped: Vec<usize>,
+    /// How many rows depend on the others: `dropped.len()`, or, where the rank was read from
+    /// `Jᵀ J` (see `solve::unknowns`) and `dropped` left empty, the rows less the rank.
+    pub dependent: usize,
     /// For each dropped row: the rows it depends on (itself included).
     pub dependencies: Vec<Vec<usize>>,
     /// Rows whose residual is above tolerance at the end.
@@ -102,11 +106,11 @@ const MAX_RESTORE: usize = 5;
 /// A projection step smaller than this (relative to the unknown) ends the projection: the
 /// answer is then within about this much of the nearest solution, far below what a drawing
 /// shows, and the rounds it would take to go further cost as much as Newton iterations.
-const PROJECTED: f64 = 1e-9;
+pub(super) const PROJECTED: f64 = 1e-9;
 
 /// Projection steps below this (relative to the unknown) that no longer shrink are rounding:
 /// the answer is then within a few times this of the nearest solution.
-const SLIDE_NOISE: f64 = 1e-7;
+pub(super) const SLIDE_NOISE: f64 = 1e-7;
 
 /// How many times one solve may move the unknowns of an equation that has no gradient where
 /// it does not hold (see [`Component::nudge_singular`]).
@@ -148,6 +152,9 @@ pub(crate) struct Component {
     pub columns: Columns,
     pub nnz: usize,
     pub gram: Option<Gram>,
+    /// `K = Jᵀ J` for [`Component::solve_by_unknowns`], once tried (`None` inside when too
+    /// large).
+    pub(super) unknowns: Option<Option<Gram>>,
 }
 
 impl Component {
@@ -245,12 +252,19 @@ impl Component {
             },
             nnz: jv,
             gram: None,
+            unknowns: None,
         }
     }
 
     /// Every local slot of every block, in `slot_col` order: constants from `values`, unknowns
     /// from `x`. Done once per solve; afterwards [`Component::load`] refreshes the unknowns.
-    fn gather_all(&self, kernels: &[Kernel], x: &[f64], values: &[f64], xs: &mut Vec<f64>) {
+    pub(super) fn gather_all(
+        &self,
+        kernels: &[Kernel],
+        x: &[f64],
+        values: &[f64],
+        xs: &mut Vec<f64>,
+    ) {
         xs.clear();
         xs.resize(self.slot_col.len(), 0.0);
         for b in &self.blocks {
@@ -269,7 +283,7 @@ impl Component {
     }
 
     /// Residuals only.
-    fn residuals(&self, kernels: &[Kernel], x: &[f64], r: &mut [f64], xs: &mut [f64]) {
+    pub(super) fn residuals(&self, kernels: &[Kernel], x: &[f64], r: &mut [f64], xs: &mut [f64]) {
         let out = Out {
             r,
             jn: &mut [],
@@ -283,7 +297,7 @@ impl Component {
     /// (`inv` holds the inverse of each row's norm, 0 for an empty row), so that the pivots of
     /// `G` measure independence, not units.
     #[allow(clippy::too_many_arguments)]
-    fn jacobian(
+    pub(super) fn jacobian(
         &self,
         kernels: &[Kernel],
         x: &[f64],
@@ -570,21 +584,33 @@ impl Component {
                 converged: false,
                 iterations: 0,
                 dropped: Vec::new(),
+                dependent: 0,
                 dependencies: Vec::new(),
                 unsatisfied: Vec::new(),
                 residual: f64::NAN,
                 too_large: true,
             };
         }
-        if self.gram.is_none() {
-            self.gram = Gram::new(m, &self.columns);
-        }
-        let mut gram_slot = self.gram.take();
         let Scratch { fixed, xs, jl, x0 } = scratch;
         if cfg.nearest {
             x0.clear();
             x0.extend_from_slice(x);
         }
+        // Steps through `Jᵀ J` where equations outnumber unknowns; the steps below then start
+        // at their solution, and only read the rank there. Where they reach none, the steps
+        // below start from the drawing again.
+        let mut before = 0;
+        if self.by_unknowns(ncols, cfg) {
+            match self.solve_by_unknowns(kernels, x, values, cfg) {
+                Some(Reached::Finished(fin)) => return fin,
+                Some(Reached::Solution(steps)) => before = steps,
+                None => x.copy_from_slice(&x0[..]),
+            }
+        }
+        if self.gram.is_none() {
+            self.gram = Gram::new(m, &self.columns);
+        }
+        let mut gram_slot = self.gram.take();
         // The work vectors: residuals `r`, Jacobian `jn`, row norms `inv`, `y`, the step `dx`,
         // the trial point `xt` and its residuals `rt`; the first solution a sliding solve
         // reached (`keep`) and its residuals (`r_keep`), the answer if the slide towards the
@@ -1031,8 +1057,9 @@ impl Component {
         }
         let mut fin = Finish {
             converged,
-            iterations,
+            iterations: before + iterations,
             dropped: Vec::new(),
+            dependent: 0,
             dependencies: Vec::new(),
             unsatisfied: (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect(),
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
@@ -1054,6 +1081,7 @@ impl Component {
             // No factorisation: count every row as unresolved.
             fin.dropped = (0..m).collect();
         }
+        fin.dependent = fin.dropped.len();
         fin
     }
 }

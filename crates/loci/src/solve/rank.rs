@@ -105,7 +105,7 @@ fn row_entries(columns: &Columns, rows: &[usize], m: usize) -> Vec<Vec<(usize, u
 }
 
 /// How many dependency right-hand sides are solved together.
-const DEPENDENCY_BLOCK: usize = 32;
+pub(crate) const DEPENDENCY_BLOCK: usize = 32;
 
 /// For each dropped row `k`, the rows that row `k` of the normalised Jacobian is a combination
 /// of: solve `G c = J J_kᵀ`; dropped rows get (almost) nothing, so `c` expresses row `k` in the
@@ -149,7 +149,7 @@ pub(crate) fn dependencies(
 }
 
 /// How many random combinations of the dropped rows [`dependent_union`] solves for.
-const UNION_PROBES: usize = 3;
+pub(crate) const UNION_PROBES: usize = 3;
 
 /// The rows on some circuit through a dropped row, when there are too many dropped rows to
 /// find each one's circuit (a mesh of shared points drops thousands of implied rows, and one

@@ -1,0 +1,411 @@
+//! Newton's steps on the unknowns' side, for components with more equations than unknowns (a
+//! triangulated mesh: a distance on every edge, three equations for every two unknowns).
+//!
+//! [`Component::solve`] takes its steps through `G = J Jᵀ`, one row per equation: on a mesh
+//! about a third of them are implied by the others, and every step factorises them all only to
+//! drop them again. The same steps come from `K = Jᵀ J`, one row per unknown, which is smaller
+//! and sparser there (a mesh's `K` has the pattern of the mesh itself, `G` that of its edges
+//! meeting). [`Component::solve_by_unknowns`] takes Gauss-Newton steps through `K` to a
+//! solution nearest the drawing; [`Component::solve`] then starts from it, where the
+//! equations already hold, and reads the rank and the redundant equations from `G` once, as
+//! it would have at the end of its own steps. Where no solution is reached this way (the
+//! equations cannot all hold, a step fails), the unknowns are put back and the solve runs as
+//! before, so that conflicts are found and named as they always were.
+//!
+//! A step through `K` solves the equations in the least-squares sense: where they are
+//! consistent (as at and near a solution of consistent equations) it is the step through `G`;
+//! implied equations that do not hold yet are weighed with the others rather than dropped.
+//! Where some unknowns are free (`K` singular, its dependent columns dropped), the step is
+//! moved along the free directions to the point nearest the drawing, which is the step
+//! through `G` with the slide folded in.
+
+use super::gram::Gram;
+use super::newton::{generic, Component, Finish, PROJECTED, SLIDE_NOISE};
+use super::rank::{DEPENDENCY_BLOCK, UNION_PROBES};
+use super::Config;
+use crate::equations::Kernel;
+
+/// Where [`Component::solve_by_unknowns`] ended.
+pub(crate) enum Reached {
+    /// A solution, after this many steps; the rank is still to be read.
+    Solution(usize),
+    /// A solution and its rank, read from `K` (see [`Component::solve_by_unknowns`]).
+    Finished(Finish),
+}
+
+/// The most free directions a step is moved along (each costs a solve with `K` and a column
+/// of a small dense system); a component with more is left to [`Component::solve`] (a truss,
+/// a mechanism, has fewer equations than unknowns anyway).
+const MAX_FREE: usize = 8;
+
+/// The most steps: consistent equations from a drawing close to a solution take a handful.
+const MAX_STEPS: usize = 30;
+
+/// Steps that each leave more than this fraction of the merit before them show equations that
+/// cannot all hold (or a start too far off for plain steps): after [`SLOW_STEPS`] of them in
+/// a row, the solve is left to [`Component::solve`].
+const SLOW: f64 = 0.5;
+const SLOW_STEPS: usize = 4;
+
+/// Columns of `K` are dropped at this multiple of the rank tolerance (see
+/// [`Component::rank_by_unknowns`]), as `rank::reveal` looks again at rows of `J Jᵀ`.
+const SUSPECT: f64 = 1e4;
+
+/// Halvings of a step before it counts as failed.
+const BACKTRACKS: usize = 12;
+
+impl Component {
+    /// Whether [`Component::solve_by_unknowns`] is worth trying: more equations than unknowns,
+    /// and enough of them for a second factorisation's structure to pay.
+    pub(super) fn by_unknowns(&self, ncols: usize, cfg: &Config) -> bool {
+        cfg.unknowns_side && cfg.nearest && ncols >= 64 && self.rows > ncols
+    }
+
+    /// Gauss-Newton steps through `K = Jᵀ J` from `x` to a solution nearest the drawing `x`
+    /// started at, with `x` left there; `None` (with `x` wherever the steps left it) when they
+    /// did not reach one.
+    ///
+    /// At the solution, when more rows depend on the others than [`Component::solve`] would
+    /// name one by one (it then names the rows on every circuit through a dependent one, the
+    /// support of `J`'s left null space, whichever rows its elimination dropped), the rank and
+    /// those rows are read from `K`, and the solve is [`Reached::Finished`]: the rank is the
+    /// unknowns less the columns `K` drops, and for a generic `w` the part of `w` outside the
+    /// span of `J`'s columns, `w - J u` with `K u = Jᵀ w`, is a generic vector of the left
+    /// null space, whose support is those rows. `J Jᵀ`, a third larger than `K` on a mesh and
+    /// factorised twice by the rank test, is then not built at all.
+    pub(super) fn solve_by_unknowns(
+        &mut self,
+        kernels: &[Kernel],
+        x: &mut [f64],
+        values: &[f64],
+        cfg: &Config,
+    ) -> Option<Reached> {
+        if self.unknowns.is_none() {
+            self.unknowns = Some(Gram::of_unknowns(self.rows, &self.columns));
+        }
+        // Out of the component while its steps use the component's equations.
+        let mut k = self.unknowns.take()?;
+        let steps = match k.as_mut() {
+            Some(k) => self.steps_by_unknowns(kernels, x, values, cfg, k),
+            None => None,
+        };
+        self.unknowns = Some(k);
+        steps
+    }
+
+    /// [`Component::solve_by_unknowns`] with `K`'s structure in `k`.
+    fn steps_by_unknowns(
+        &self,
+        kernels: &[Kernel],
+        x: &mut [f64],
+        values: &[f64],
+        cfg: &Config,
+        k: &mut Gram,
+    ) -> Option<Reached> {
+        let (m, ncols) = (self.rows, x.len());
+        let mut xs = Vec::new();
+        let mut jl = Vec::new();
+        self.gather_all(kernels, x, values, &mut xs);
+        let x0 = x.to_vec();
+        let mut r = vec![0.0; m];
+        let mut jn = vec![0.0; self.nnz];
+        let mut inv = vec![0.0; m];
+        let mut rt = vec![0.0; m];
+        let mut u = vec![0.0; ncols];
+        let mut dx = vec![0.0; ncols];
+        let mut xt = vec![0.0; ncols];
+        let mut t = vec![0.0; m];
+        let mut free: Vec<f64> = Vec::new();
+        let merit = |r: &[f64], inv: &[f64]| {
+            r.iter()
+                .zip(inv)
+                .map(|(a, b)| (a * b) * (a * b))
+                .sum::<f64>()
+        };
+        let (mut settled, mut last_move, mut slow) = (false, f64::INFINITY, 0usize);
+        let columns = &self.columns;
+        let scale = &self.scale;
+        for steps in 0..=MAX_STEPS {
+            self.jacobian(kernels, x, &mut r, &mut jn, &mut inv, &mut xs, &mut jl);
+            let finite = r.iter().all(|v| v.is_finite());
+            let holds = finite && r.iter().all(|v| v.abs() <= cfg.tolerance);
+            if holds && (settled || steps == 0) {
+                // The last step moved the unknowns by no more than `PROJECTED`: `K` as
+                // factorised for it is `K` here but for rounding-sized changes.
+                let current = steps > 0 && last_move <= PROJECTED;
+                return Some(self.rank_by_unknowns(k, current, &jn, &r, steps, cfg));
+            }
+            // An equation without a gradient where it does not hold is nudged by the other
+            // solve; so is anything not finite.
+            if steps == MAX_STEPS
+                || !finite
+                || r.iter()
+                    .zip(&inv)
+                    .any(|(&ri, &iv)| iv == 0.0 && ri.abs() > cfg.tolerance)
+            {
+                return None;
+            }
+            k.assemble(&jn);
+            // At the wider tolerance: a free direction's pivot carries the rounding of every
+            // elimination before it, and can land above the rank tolerance (a 30x30 mesh kept
+            // its rotation's), leaving the step to swing along it instead of sliding.
+            if !k.factor(0.0, cfg.rank_tolerance * SUSPECT) {
+                return None;
+            }
+            let dropped = k.dropped();
+            if dropped.len() > MAX_FREE {
+                return None;
+            }
+            // The least-squares step with the free unknowns left where they are:
+            // K u = -Jnᵀ rn.
+            for (c, col) in columns.iter().enumerate() {
+                let mut acc = 0.0;
+                for &(row, idx) in col {
+                    acc -= jn[idx as usize] * r[row as usize] * inv[row as usize];
+                }
+                u[c] = acc;
+            }
+            k.solve(&mut u);
+            for &d in &dropped {
+                u[d] = 0.0;
+            }
+            if !dropped.is_empty() {
+                let nf = dropped.len();
+                self.free_directions(k, &jn, &dropped, &mut free, &mut t);
+                // Along them to the point nearest the drawing: u + V a, with
+                // (Vᵀ V) a = Vᵀ (z - u) and z the drawing in scaled unknowns.
+                let mut a = vec![0.0; nf * nf];
+                let mut rhs = vec![0.0; nf];
+                for i in 0..nf {
+                    let vi = &free[i * ncols..(i + 1) * ncols];
+                    for j in 0..=i {
+                        let vj = &free[j * ncols..(j + 1) * ncols];
+                        let s: f64 = vi.iter().zip(vj).map(|(p, q)| p * q).sum();
+                        a[i * nf + j] = s;
+                        a[j * nf + i] = s;
+                    }
+                    rhs[i] = (0..ncols)
+                        .map(|c| vi[c] * ((x0[c] - x[c]) / scale[c] - u[c]))
+                        .sum();
+                }
+                if !solve_small(&mut a, &mut rhs, nf) {
+                    return None;
+                }
+                for (f, &w) in rhs.iter().enumerate() {
+                    let v = &free[f * ncols..(f + 1) * ncols];
+                    u.iter_mut().zip(v).for_each(|(p, q)| *p += w * q);
+                }
+            }
+            for c in 0..ncols {
+                dx[c] = u[c] * scale[c];
+            }
+            // From a solution, the whole step: it only slides along the solutions, and the
+            // steps after it restore what its curvature breaks.
+            let m0 = merit(&r, &inv);
+            let mut alpha = 1.0;
+            let mut accepted = false;
+            for _ in 0..BACKTRACKS {
+                for c in 0..ncols {
+                    xt[c] = x[c] + alpha * dx[c];
+                }
+                self.residuals(kernels, &xt, &mut rt, &mut xs);
+                let mt = merit(&rt, &inv);
+                if mt.is_finite() && (holds || mt < m0 || mt == 0.0) {
+                    accepted = true;
+                    slow = if mt > SLOW * m0 { slow + 1 } else { 0 };
+                    break;
+                }
+                alpha *= 0.5;
+            }
+            if !accepted || (slow >= SLOW_STEPS && !holds) {
+                return None;
+            }
+            x.copy_from_slice(&xt);
+            let before = last_move;
+            last_move = if alpha == 1.0 {
+                dx.iter()
+                    .zip(x.iter())
+                    .fold(0.0f64, |a, (d, v)| a.max(d.abs() / (1.0 + v.abs())))
+            } else {
+                f64::INFINITY
+            };
+            // As the folded slide settles (see `Component::solve`).
+            settled =
+                last_move <= PROJECTED || (last_move <= SLIDE_NOISE && last_move >= 0.5 * before);
+        }
+        None
+    }
+}
+
+impl Component {
+    /// Into `free` (`dropped.len()` vectors of the unknowns, one after another), each
+    /// direction in which the equations do not move, from `k` factorised with the columns
+    /// `dropped` dropped: 1 on its dropped unknown, 0 on the others, the kept ones moving so
+    /// that no equation changes, `K_kk v_k = -K_kd`. `t` is work space of one per row.
+    fn free_directions(
+        &self,
+        k: &mut Gram,
+        jn: &[f64],
+        dropped: &[usize],
+        free: &mut Vec<f64>,
+        t: &mut [f64],
+    ) {
+        let (ncols, columns) = (self.columns.len(), &self.columns);
+        free.clear();
+        free.resize(dropped.len() * ncols, 0.0);
+        for (f, &d) in dropped.iter().enumerate() {
+            t.fill(0.0);
+            for &(row, idx) in columns.col(d) {
+                t[row as usize] += jn[idx as usize];
+            }
+            let v = &mut free[f * ncols..(f + 1) * ncols];
+            for (c, col) in columns.iter().enumerate() {
+                let mut acc = 0.0;
+                for &(row, idx) in col {
+                    acc -= jn[idx as usize] * t[row as usize];
+                }
+                v[c] = acc;
+            }
+        }
+        k.solve_many(free, dropped.len());
+        for (f, v) in free.chunks_mut(ncols).enumerate() {
+            for &d in dropped {
+                v[d] = 0.0;
+            }
+            v[dropped[f]] = 1.0;
+        }
+    }
+
+    /// At a solution with Jacobian `jn` and residuals `r`, reached in `steps`: the rank and
+    /// the rows on circuits from `K`, or only the solution when too few rows depend on others
+    /// (see [`Component::solve_by_unknowns`]). With `current`, `k` is already factorised at
+    /// the wider tolerance at a point closer to this one than anything the tests below tell
+    /// apart (a free direction is measured to about `1e-9` against `eps`; a row's share of
+    /// the left null space to about `1e-9` against `1e-6`).
+    fn rank_by_unknowns(
+        &self,
+        k: &mut Gram,
+        current: bool,
+        jn: &[f64],
+        r: &[f64],
+        steps: usize,
+        cfg: &Config,
+    ) -> Reached {
+        let (m, ncols) = (self.rows, self.columns.len());
+        if !cfg.find_failed || m <= ncols + DEPENDENCY_BLOCK {
+            return Reached::Solution(steps);
+        }
+        // As `rank::reveal` reads `J Jᵀ`: the columns dropped at a tolerance wider than the
+        // rank tolerance are candidates, each confirmed by measuring its free direction `v`
+        // in `J` itself, `‖J v‖² <= eps ‖v‖²`, where rounding is not squared. Where one is not
+        // confirmed, `J Jᵀ` decides.
+        let eps = cfg.rank_tolerance;
+        if !current {
+            k.assemble(jn);
+            if !k.factor(0.0, eps * SUSPECT) {
+                return Reached::Solution(steps);
+            }
+        }
+        let free = k.dropped();
+        if free.len() > MAX_FREE {
+            return Reached::Solution(steps);
+        }
+        if !free.is_empty() {
+            let (mut dirs, mut t) = (Vec::new(), vec![0.0; m]);
+            self.free_directions(k, jn, &free, &mut dirs, &mut t);
+            for v in dirs.chunks(ncols) {
+                t.fill(0.0);
+                for (c, col) in self.columns.iter().enumerate() {
+                    for &(row, idx) in col {
+                        t[row as usize] += jn[idx as usize] * v[c];
+                    }
+                }
+                let jv: f64 = t.iter().map(|a| a * a).sum();
+                let vv: f64 = v.iter().map(|a| a * a).sum();
+                if !(jv <= eps * vv) {
+                    return Reached::Solution(steps);
+                }
+            }
+        }
+        let dependent = m - (ncols - free.len());
+        if dependent <= DEPENDENCY_BLOCK {
+            return Reached::Solution(steps);
+        }
+        let columns = &self.columns;
+        // Jᵀ w for generic weights w, one right-hand side per probe.
+        let mut u = vec![0.0; ncols * UNION_PROBES];
+        for (p, up) in u.chunks_mut(ncols).enumerate() {
+            for (c, col) in columns.iter().enumerate() {
+                up[c] = col
+                    .iter()
+                    .map(|&(row, idx)| jn[idx as usize] * generic(row as usize, p))
+                    .sum();
+            }
+        }
+        k.solve_many(&mut u, UNION_PROBES);
+        let mut on_circuit = vec![false; m];
+        let mut y = vec![0.0; m];
+        for (p, up) in u.chunks_mut(ncols).enumerate() {
+            for &d in &free {
+                up[d] = 0.0;
+            }
+            for (i, yi) in y.iter_mut().enumerate() {
+                *yi = generic(i, p);
+            }
+            for (c, col) in columns.iter().enumerate() {
+                for &(row, idx) in col {
+                    y[row as usize] -= jn[idx as usize] * up[c];
+                }
+            }
+            for (o, v) in on_circuit.iter_mut().zip(&y) {
+                // As `rank::dependent_union` tells a coefficient from rounding.
+                *o |= !(v.abs() <= 1e-6);
+            }
+        }
+        let union: Vec<usize> = (0..m).filter(|&i| on_circuit[i]).collect();
+        Reached::Finished(Finish {
+            converged: true,
+            iterations: steps,
+            dropped: Vec::new(),
+            dependent,
+            dependencies: vec![union],
+            unsatisfied: Vec::new(),
+            residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
+            too_large: false,
+        })
+    }
+}
+
+/// Solves the symmetric positive definite `a x = b` (`n x n`, row-major) in place by Gaussian
+/// elimination with partial pivoting: false if singular.
+fn solve_small(a: &mut [f64], b: &mut [f64], n: usize) -> bool {
+    for col in 0..n {
+        let piv = (col..n)
+            .max_by(|&i, &j| a[i * n + col].abs().total_cmp(&a[j * n + col].abs()))
+            .unwrap_or(col);
+        if !(a[piv * n + col].abs() > 0.0) {
+            return false;
+        }
+        if piv != col {
+            for j in 0..n {
+                a.swap(piv * n + j, col * n + j);
+            }
+            b.swap(piv, col);
+        }
+        for i in col + 1..n {
+            let f = a[i * n + col] / a[col * n + col];
+            for j in col..n {
+                a[i * n + j] -= f * a[col * n + j];
+            }
+            b[i] -= f * b[col];
+        }
+    }
+    for col in (0..n).rev() {
+        let mut s = b[col];
+        for j in col + 1..n {
+            s -= a[col * n + j] * b[j];
+        }
+        b[col] = s / a[col * n + col];
+    }
+    b.iter().all(|v| v.is_finite())
+}
