@@ -1,7 +1,11 @@
-//! Diagnoses one generated benchmark problem with loci and prints the report.
-//! `cargo run --release -p loci-bench --example diag_family -- FAMILY VARIANT SIZE`.
+//! Solves one generated benchmark problem with loci, with the default settings and a few
+//! others, and with `--diagnose` also diagnoses it.
+//! `cargo run --release -p loci-bench --example diag_family -- FAMILY VARIANT SIZE [--diagnose]`.
+use loci::Config;
 use loci_bench::generate::generate;
 use loci_bench::problem::{Family, Variant};
+use loci_bench::slvs::SOLVE_GROUP;
+use std::time::Instant;
 
 fn main() {
     let a: Vec<String> = std::env::args().skip(1).collect();
@@ -15,22 +19,29 @@ fn main() {
         .expect("variant");
     let p = generate(family, variant, a[2].parse().expect("size"));
     let sp = loci_bench::slvs::build(&p).expect("builds");
-    let mut sys = sp.system.clone();
-    let r = sys
-        .solve_group(loci_bench::slvs::SOLVE_GROUP)
-        .expect("solves");
-    println!("{r:?}");
-    let d = sp
-        .system
-        .diagnose(loci_bench::slvs::SOLVE_GROUP)
-        .expect("diagnoses");
-    println!("{:?} conflicting {:?}", d.outcome, d.conflicting);
-    for c in r.failed.iter().take(12) {
+    for (name, cfg) in [
+        ("default", Config::default()),
+        ("nearest off", Config::default().with_nearest(false)),
+        (
+            "SolveSpace's angles",
+            Config::default().with_solvespace_angles(true),
+        ),
+    ] {
+        let mut sys = sp.system.clone();
+        let t = Instant::now();
+        let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &cfg).expect("solves");
         println!(
-            "{c:?}: {:?}",
-            sp.system
-                .constraint(*c)
-                .map(|c| (c.kind, c.pt_a, c.pt_b, c.entity_a, c.entity_b, c.val))
+            "{name}: {} in {:.1} ms, dof {}, {} iterations, residual {:e}, {} failed",
+            r.outcome,
+            t.elapsed().as_secs_f64() * 1e3,
+            r.dof,
+            r.iterations,
+            r.residual,
+            r.failed.len()
         );
+    }
+    if a.iter().any(|x| x == "--diagnose") {
+        let d = sp.system.diagnose(SOLVE_GROUP).expect("diagnoses");
+        println!("diagnosis: {} conflicting {:?}", d.outcome, d.conflicting);
     }
 }

@@ -501,9 +501,11 @@ fn mesh(b: &mut Builder, n: usize) -> Extra {
 }
 
 /// An `n x n` sketch of four-sided profiles sharing their edges (the cells of a jittered
-/// lattice of `(n + 1) x (n + 1)` points, a distance on every edge), braced by an angle at
-/// one corner of every profile of the first row and column (which makes the lattice rigid
-/// but for its rotation about the fixed corner), with a slot in every third profile.
+/// lattice of `(n + 1) x (n + 1)` points), dimensioned as a drafter dimensions a row of
+/// bays: along the bottom each edge's length and its angle to the edge before (the first
+/// horizontal), up every column each edge's length and its angle to the edge below it (the
+/// bottom edge for the first), and the edges across, shared by the profiles above and below
+/// them, implied. Every third profile holds a slot.
 fn profiles(b: &mut Builder, n: usize) -> Extra {
     let at = jittered_lattice(b, n + 1);
     let m = n + 1;
@@ -514,28 +516,41 @@ fn profiles(b: &mut Builder, n: usize) -> Extra {
         for i in 0..m {
             if i + 1 < m {
                 right[at(i, j)] = b.line(at(i, j), at(i + 1, j));
-                b.cons.push(b.distance(at(i, j), at(i + 1, j)));
             }
             if j + 1 < m {
                 up[at(i, j)] = b.line(at(i, j), at(i, j + 1));
-                b.cons.push(b.distance(at(i, j), at(i, j + 1)));
             }
+        }
+    }
+    b.cons.push(Con::Horizontal { l: right[at(0, 0)] });
+    for i in 0..n {
+        b.cons.push(b.distance(at(i, 0), at(i + 1, 0)));
+        if i > 0 {
+            b.cons.push(b.angle(right[at(i - 1, 0)], right[at(i, 0)]));
+        }
+    }
+    for i in 0..m {
+        for j in 0..n {
+            let edge = up[at(i, j)];
+            b.cons.push(b.distance(at(i, j), at(i, j + 1)));
+            let below = if j > 0 {
+                up[at(i, j - 1)]
+            } else {
+                right[at(i.min(n - 1), 0)]
+            };
+            b.cons.push(b.angle(below, edge));
         }
     }
     for j in 0..n {
         for i in 0..n {
-            let corner = at(i, j);
-            if i == 0 || j == 0 {
-                b.cons.push(b.angle(right[corner], up[corner]));
-            }
             if (i + 2 * j) % 3 == 0 {
-                slot(b, corner, at(i + 1, j), right[corner]);
+                slot(b, at(i, j), at(i + 1, j), right[at(i, j)]);
             }
         }
     }
-    // The first profile is rigid: its diagonal follows from its sides and its angle.
+    // The first profile's top edge follows from its other sides and angles.
     Extra {
-        con: b.distance(at(0, 0), at(1, 1)),
+        con: b.distance(at(0, 1), at(1, 1)),
     }
 }
 

@@ -110,11 +110,11 @@ impl Family {
             }
             Family::Profiles => {
                 "sketch of N = n x n closed four-sided profiles on a jittered lattice, sharing \
-                 their edges: a distance on every edge, an angle at one corner of each profile \
-                 of the first row and column, one corner fixed; every third profile holds a \
-                 slot (two lines and two arcs, tangent at all four joints, radii and one \
-                 length given) placed by two distances and an angle (1 DOF left, the rotation \
-                 about the fixed corner)"
+                 their edges, dimensioned as a drafter dimensions bays: along the bottom and up \
+                 every column each edge's length and its angle to the edge before it, the edges \
+                 across implied, the first edge horizontal, one corner fixed; every third \
+                 profile holds a slot (two lines and two arcs, tangent at all four joints, radii \
+                 and one length given) placed by two distances and an angle (fully constrained)"
             }
         }
     }

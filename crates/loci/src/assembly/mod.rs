@@ -376,7 +376,10 @@ impl Assembly {
             None
         };
         let mate_of = |m: &Member| match m {
-            Member::Constraint(c) => owner.get(c.0 as usize).copied().filter(|&m| m != usize::MAX),
+            Member::Constraint(c) => owner
+                .get(c.0 as usize)
+                .copied()
+                .filter(|&m| m != usize::MAX),
             Member::Entity(_) => None,
         };
         let ids: Vec<String> = self.mates.iter().map(|m| m.id.clone()).collect();

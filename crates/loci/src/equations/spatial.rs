@@ -337,10 +337,7 @@ pub(super) fn jacobian(
             }
         }
         EqKind::Constraint(K::Parallel | K::Perpendicular) => {
-            let (Some(a), Some(b)) = (
-                direction(e.ent(0), x, k),
-                direction(e.ent(1), x, k),
-            ) else {
+            let (Some(a), Some(b)) = (direction(e.ent(0), x, k), direction(e.ent(1), x, k)) else {
                 return false;
             };
             let (na2, nb2) = (dot(a.v, a.v), dot(b.v, b.v));
@@ -414,7 +411,11 @@ pub(super) fn jacobian(
             };
             let (v, dq) = normal(q, x, k);
             for (s, d) in dq {
-                put(0, s, 2.0 * (v[0] * d[0] + v[1] * d[1] + v[2] * d[2] + v[3] * d[3]));
+                put(
+                    0,
+                    s,
+                    2.0 * (v[0] * d[0] + v[1] * d[1] + v[2] * d[2] + v[3] * d[3]),
+                );
             }
         }
         _ => return false,
