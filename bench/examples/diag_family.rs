@@ -40,6 +40,14 @@ fn main() {
             r.failed.len()
         );
     }
+    if a.iter().any(|x| x == "--failed") {
+        let mut sys = sp.system.clone();
+        let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+        for c in &r.failed {
+            let k = sp.system.constraint(*c).expect("named");
+            println!("{c:?} {:?} {:?} {:?} {:?} {:?} {}", k.kind, k.pt_a, k.pt_b, k.entity_a, k.entity_b, k.val);
+        }
+    }
     if a.iter().any(|x| x == "--diagnose") {
         let d = sp.system.diagnose(SOLVE_GROUP).expect("diagnoses");
         println!("diagnosis: {} conflicting {:?}", d.outcome, d.conflicting);
