@@ -45,7 +45,10 @@ fn main() {
         let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
         for c in &r.failed {
             let k = sp.system.constraint(*c).expect("named");
-            println!("{c:?} {:?} {:?} {:?} {:?} {:?} {}", k.kind, k.pt_a, k.pt_b, k.entity_a, k.entity_b, k.val);
+            println!(
+                "{c:?} {:?} {:?} {:?} {:?} {:?} {}",
+                k.kind, k.pt_a, k.pt_b, k.entity_a, k.entity_b, k.val
+            );
         }
     }
     if a.iter().any(|x| x == "--diagnose") {

@@ -23,6 +23,8 @@ mod report;
 #[cfg(test)]
 mod slide_tests;
 mod substitute;
+#[cfg(test)]
+mod test_support;
 mod unknowns;
 #[cfg(test)]
 mod unknowns_tests;

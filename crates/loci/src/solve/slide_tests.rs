@@ -2,25 +2,13 @@
 //! same slide run after Newton has reached a solution: both must end at the same solution.
 //! Likewise steps solved with an earlier factorisation, refined, against fresh ones.
 
-use super::{solve, Config, Outcome, Report};
+use super::test_support::{moved, run, Rng};
+use super::{Config, Outcome};
 use crate::model::{Constraint, ConstraintKind as K, Entity, Param, System};
 
 /// The workplane of the 2D sketches.
 const WP: u32 = 200;
 const G: u32 = 2;
-
-/// A deterministic generator of numbers in `[-0.5, 0.5)`.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    }
-}
 
 /// An `n x n` truss: jittered lattice points, a distance on every bar (lengths of another
 /// jitter, so the drawing does not hold), one diagonal bracing the first cell, the first
@@ -115,34 +103,6 @@ fn chain_3d(n: usize) -> System {
     sys
 }
 
-/// Solves a copy of `start` with `cfg`: the report and the values of the solved group.
-fn run(start: &System, cfg: &Config) -> (Report, Vec<f64>) {
-    let mut sys = start.clone();
-    let report = solve(&mut sys, G.into(), &[], cfg).unwrap();
-    let values = sys
-        .params()
-        .iter()
-        .filter(|p| p.group.0 == G)
-        .map(|p| p.val)
-        .collect();
-    (report, values)
-}
-
-/// The distance moved from the drawing.
-fn moved(start: &System, values: &[f64]) -> f64 {
-    let x0: Vec<f64> = start
-        .params()
-        .iter()
-        .filter(|p| p.group.0 == G)
-        .map(|p| p.val)
-        .collect();
-    x0.iter()
-        .zip(values)
-        .map(|(a, b)| (a - b) * (a - b))
-        .sum::<f64>()
-        .sqrt()
-}
-
 /// The folded slide, the separate slide and Newton alone on `start`: the two slides land on
 /// the same solution, nearer the drawing than Newton's, with the same DOF; the folded one in
 /// no more iterations.
@@ -152,9 +112,9 @@ fn check_same_nearest(start: &System) {
         fold_slide: false,
         ..Config::default()
     };
-    let (folded, xf) = run(start, &folded_cfg);
-    let (separate, xs) = run(start, &separate_cfg);
-    let (newton, xn) = run(start, &Config::default().with_nearest(false));
+    let (folded, xf) = run(start, G, &folded_cfg);
+    let (separate, xs) = run(start, G, &separate_cfg);
+    let (newton, xn) = run(start, G, &Config::default().with_nearest(false));
     for r in [&folded, &separate, &newton] {
         assert_eq!(r.outcome, Outcome::Okay, "{r:?}");
         assert!(r.residual <= 1e-10, "{r:?}");
@@ -168,7 +128,11 @@ fn check_same_nearest(start: &System) {
         .zip(&xs)
         .fold(0.0f64, |a, (p, q)| a.max((p - q).abs()));
     assert!(largest <= 1e-7 * scale, "the slides differ by {largest}");
-    let (mf, ms, mn) = (moved(start, &xf), moved(start, &xs), moved(start, &xn));
+    let (mf, ms, mn) = (
+        moved(start, G, &xf),
+        moved(start, G, &xs),
+        moved(start, G, &xn),
+    );
     assert!((mf - ms).abs() <= 1e-9 * ms, "{mf} vs {ms}");
     assert!(mf < mn, "{mf} is not nearer than Newton's {mn}");
     assert!(
@@ -198,8 +162,8 @@ fn a_fully_constrained_solve_takes_the_same_steps_with_or_without_the_slide() {
         .in_workplane(Some(WP))
         .with_points(300, 301);
     sys.add_constraint(level).unwrap();
-    let (a, xa) = run(&sys, &Config::default());
-    let (b, xb) = run(&sys, &Config::default().with_nearest(false));
+    let (a, xa) = run(&sys, G, &Config::default());
+    let (b, xb) = run(&sys, G, &Config::default().with_nearest(false));
     assert_eq!(a.dof, 0, "{a:?}");
     assert!(a.outcome.is_ok() && a.residual <= 1e-10, "{a:?}");
     assert!(a.iterations > 0, "{a:?}");
@@ -214,8 +178,8 @@ fn check_reuse_same(start: &System) {
         reuse_factor: false,
         ..Config::default()
     };
-    let (reused, xr) = run(start, &Config::default());
-    let (fresh, xf) = run(start, &fresh_cfg);
+    let (reused, xr) = run(start, G, &Config::default());
+    let (fresh, xf) = run(start, G, &fresh_cfg);
     for r in [&reused, &fresh] {
         assert!(r.outcome.is_ok() && r.residual <= 1e-10, "{r:?}");
     }

@@ -2,24 +2,12 @@
 //! and trusses, solvable, redundant and inconsistent, of a few sizes, the same outcome, DOF,
 //! named constraints and (to the slide's tolerance) the same solution.
 
+use super::test_support::{moved, run, Rng};
 use super::{solve, Config, Outcome, Report};
 use crate::model::{Constraint, ConstraintKind as K, Entity, Param, System};
 
 const WP: u32 = 200;
 const G: u32 = 2;
-
-/// A deterministic generator of numbers in `[-0.5, 0.5)`.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-    }
-}
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Variant {
@@ -130,32 +118,6 @@ fn lattice_pinned(
     sys
 }
 
-/// Solves a copy of `start` with `cfg`: the report and the values of the solved group.
-fn run(start: &System, cfg: &Config) -> (Report, Vec<f64>) {
-    let mut sys = start.clone();
-    let report = solve(&mut sys, G.into(), &[], cfg).unwrap();
-    let values = sys
-        .params()
-        .iter()
-        .filter(|p| p.group.0 == G)
-        .map(|p| p.val)
-        .collect();
-    (report, values)
-}
-
-/// The distance from the drawing to `values`.
-fn moved(start: &System, values: &[f64]) -> f64 {
-    let x0 = start
-        .params()
-        .iter()
-        .filter(|p| p.group.0 == G)
-        .map(|p| p.val);
-    x0.zip(values)
-        .map(|(a, b)| (a - b) * (a - b))
-        .sum::<f64>()
-        .sqrt()
-}
-
 /// The constraints named redundant by `a` (through `Jᵀ J`) and by `b` (through `J Jᵀ` alone)
 /// are the same, but for constraints `b` names wrongly: a constraint is on a circuit, and
 /// rightly named, exactly when the drawing without it keeps the DOF. On large meshes the rows
@@ -175,7 +137,7 @@ fn check_named(start: &System, a: &Report, b: &Report, what: &str) {
     for &c in differ {
         let mut without = start.clone();
         without.remove_constraint(c).unwrap();
-        let (w, _) = run(&without, &rows_only);
+        let (w, _) = run(&without, G, &rows_only);
         assert_eq!(
             w.dof == a.dof,
             a.failed.contains(&c),
@@ -194,8 +156,8 @@ fn check_same(start: &System, what: &str) -> Report {
         unknowns_side: false,
         ..Config::default()
     };
-    let (a, xa) = run(start, &Config::default());
-    let (b, xb) = run(start, &rows_only);
+    let (a, xa) = run(start, G, &Config::default());
+    let (b, xb) = run(start, G, &rows_only);
     assert_eq!(a.outcome, b.outcome, "{what}: {a:?} vs {b:?}");
     assert_eq!(a.dof, b.dof, "{what}");
     assert_eq!(a.failed_entities, b.failed_entities, "{what}");
@@ -217,7 +179,7 @@ fn check_same(start: &System, what: &str) -> Report {
         );
         // And no farther from the drawing (the steps through `Jᵀ J` settle at least as close
         // to the nearest solution).
-        let (ma, mb) = (moved(start, &xa), moved(start, &xb));
+        let (ma, mb) = (moved(start, G, &xa), moved(start, G, &xb));
         assert!(ma <= mb * (1.0 + 1e-9), "{what}: moved {ma} against {mb}");
     } else {
         assert_eq!(xa, xb, "{what}");
@@ -270,8 +232,8 @@ fn trusses_are_solved_as_through_the_equations() {
                 ..Config::default()
             };
             // Fewer equations than unknowns: the same steps, bit for bit.
-            let (a, xa) = run(&start, &Config::default());
-            let (b, xb) = run(&start, &rows_only);
+            let (a, xa) = run(&start, G, &Config::default());
+            let (b, xb) = run(&start, G, &rows_only);
             assert_eq!(a, b, "{what}");
             assert_eq!(xa, xb, "{what}");
         }
@@ -343,8 +305,8 @@ fn large_meshes_solved_through_the_unknowns_side_end_as_through_the_equations() 
             unknowns_side: false,
             ..Config::default()
         };
-        let (a, _) = run(&start, &Config::default());
-        let (b, _) = run(&start, &rows_only);
+        let (a, _) = run(&start, G, &Config::default());
+        let (b, _) = run(&start, G, &rows_only);
         let only_a: Vec<_> = a.failed.iter().filter(|c| !b.failed.contains(c)).collect();
         let only_b: Vec<_> = b.failed.iter().filter(|c| !a.failed.contains(c)).collect();
         eprintln!(
