@@ -237,10 +237,6 @@ pub(crate) fn name_conflicts(
         .map(|&c| Owner::Constraint(c))
         .chain(report.failed_entities.iter().map(|&e| Owner::Entity(e)))
         .collect();
-    let Ok(all) = Equations::new(sys, group, &start) else {
-        return false;
-    };
-    let ran = ran_off(&all, &start, report.residual);
     let mut sets = Vec::new();
     if !seed.is_empty() {
         let keep = focus::focus(sys, group, &seed, kernels, links);
@@ -248,14 +244,26 @@ pub(crate) fn name_conflicts(
             sets = sets_in(&eqs);
         }
     }
-    let whole = if sets.is_empty() {
+    let mut whole = None;
+    if sets.is_empty() {
+        let Ok(all) = Equations::new(sys, group, &start) else {
+            return false;
+        };
         sets = sets_in(&all);
-        Some(all)
-    } else {
-        None
-    };
-    if ran {
-        sets.retain(|s| s.members.len() <= minimal::LARGE_SET);
+        whole = Some(all);
+    }
+    // Only a large set can be dropped for a solve that ran off: the whole group's equations
+    // are compiled for the test only then.
+    if sets.iter().any(|s| s.members.len() > minimal::LARGE_SET) {
+        if whole.is_none() {
+            whole = Equations::new(sys, group, &start).ok();
+        }
+        if whole
+            .as_ref()
+            .is_some_and(|all| ran_off(all, &start, report.residual))
+        {
+            sets.retain(|s| s.members.len() <= minimal::LARGE_SET);
+        }
     }
     report.failed.clear();
     report.failed_entities.clear();

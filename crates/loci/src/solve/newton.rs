@@ -987,9 +987,7 @@ impl Component {
             x.copy_from_slice(xt);
             let before = last_move;
             last_move = if alpha == 1.0 {
-                dx.iter()
-                    .zip(x.iter())
-                    .fold(0.0f64, |a, (d, v)| a.max(d.abs() / (1.0 + v.abs())))
+                relative_move(dx, x)
             } else {
                 f64::INFINITY
             };
@@ -1084,6 +1082,13 @@ impl Component {
         fin.dependent = fin.dropped.len();
         fin
     }
+}
+
+/// The largest move of a step `dx` that landed at `x`, relative to each unknown's size.
+pub(super) fn relative_move(dx: &[f64], x: &[f64]) -> f64 {
+    dx.iter()
+        .zip(x)
+        .fold(0.0f64, |a, (d, v)| a.max(d.abs() / (1.0 + v.abs())))
 }
 
 /// A number in [-1, -0.5] or [0.5, 1] that depends only on `c` and `attempt`: directions of

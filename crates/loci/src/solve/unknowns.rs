@@ -223,9 +223,7 @@ impl Component {
             x.copy_from_slice(&xt);
             let before = last_move;
             last_move = if alpha == 1.0 {
-                dx.iter()
-                    .zip(x.iter())
-                    .fold(0.0f64, |a, (d, v)| a.max(d.abs() / (1.0 + v.abs())))
+                super::newton::relative_move(&dx, x)
             } else {
                 f64::INFINITY
             };
