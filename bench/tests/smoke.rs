@@ -88,6 +88,63 @@ fn loci_and_ezpz_solve_every_family_and_the_checker_agrees() {
     }
 }
 
+/// Profiles hold angles of a degree or two that the start turns the other way. Their sign
+/// reaches loci (whose 2D angle keeps the sign it starts with) as it reaches ezpz, so loci
+/// solves every size with each angle on its intended side. Given only `|deg|`, loci kept the
+/// start's sign, a sketch in which some slots cannot be placed (8x8, 15x15 and 20x20 failed).
+#[test]
+fn profiles_solve_with_every_angle_on_its_intended_side() {
+    for n in [8, 15, 20] {
+        let p = generate(Family::Profiles, Variant::Solvable, n);
+        let out = run_in_process(Solver::Loci, &p, 1, 5.0).unwrap();
+        assert_eq!(
+            judge(&p, &out).0,
+            Verdict::Solved,
+            "{}: {}",
+            p.label(),
+            out.detail
+        );
+        let dir = |l: usize| {
+            let [a, b] = p.lines[l];
+            let (s, e) = (out.points[a], out.points[b]);
+            [e[0] - s[0], e[1] - s[1]]
+        };
+        let mut turned = 0;
+        for c in &p.cons {
+            if let Con::Angle { l1, l2, deg } = *c {
+                let (u, v) = (dir(l1), dir(l2));
+                let got = (u[0] * v[1] - u[1] * v[0])
+                    .atan2(u[0] * v[0] + u[1] * v[1])
+                    .to_degrees();
+                assert!(
+                    (got - deg).abs() < 1e-6,
+                    "{}: angle {got} for {deg}",
+                    p.label()
+                );
+                let s = start_points(&p);
+                let (su, sv) = (
+                    [
+                        s[p.lines[l1][1]][0] - s[p.lines[l1][0]][0],
+                        s[p.lines[l1][1]][1] - s[p.lines[l1][0]][1],
+                    ],
+                    [
+                        s[p.lines[l2][1]][0] - s[p.lines[l2][0]][0],
+                        s[p.lines[l2][1]][1] - s[p.lines[l2][0]][1],
+                    ],
+                );
+                if (su[0] * sv[1] - su[1] * sv[0]).signum() != deg.signum() {
+                    turned += 1;
+                }
+            }
+        }
+        assert!(
+            turned > 0,
+            "{}: no angle starts turned the other way",
+            p.label()
+        );
+    }
+}
+
 #[test]
 fn checker_catches_a_wrong_answer() {
     let p = generate(Family::Fillets, Variant::Solvable, 10);
