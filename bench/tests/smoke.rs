@@ -145,6 +145,29 @@ fn profiles_solve_with_every_angle_on_its_intended_side() {
     }
 }
 
+/// An impossible length in a large sheet of profiles: Newton's damped steps reach the
+/// least-squares point and then lower the merit by next to nothing at every step. The solve
+/// stops there and names the profile the length closes (its six other dimensions and the
+/// length), where it used to crawl on to its 1,000th iteration.
+#[test]
+fn an_impossible_length_in_profiles_is_named_without_crawling() {
+    let p = generate(Family::Profiles, Variant::Inconsistent, 30);
+    let mut sp = slvs::build(&p).unwrap();
+    let r = loci::solve(
+        &mut sp.system,
+        slvs::SOLVE_GROUP.into(),
+        &[],
+        &loci::Config::default(),
+    )
+    .unwrap();
+    assert_eq!(r.outcome, loci::Outcome::Inconsistent);
+    assert!(r.iterations < 100, "{} iterations", r.iterations);
+    // The extra length is the last constraint; the first profile's sides and angles close it.
+    let last = sp.system.constraints().last().unwrap().h;
+    assert!(r.failed.contains(&last.into()), "{:?}", r.failed);
+    assert_eq!(r.failed.len(), 7, "{:?}", r.failed);
+}
+
 #[test]
 fn checker_catches_a_wrong_answer() {
     let p = generate(Family::Fillets, Variant::Solvable, 10);
