@@ -168,6 +168,37 @@ fn an_impossible_length_in_profiles_is_named_without_crawling() {
     assert_eq!(r.failed.len(), 7, "{:?}", r.failed);
 }
 
+/// One wrong diagonal in a mesh with a length on every edge: every circuit through it fails
+/// where the solve stops, and each other one holds once the diagonal is left out. The
+/// diagnosis names the smallest (the diagonal and the five edges of its cell) and not the 44
+/// larger ones through the same diagonal that it used to shrink and list.
+#[test]
+fn one_wrong_diagonal_in_a_mesh_is_named_once() {
+    let p = generate(Family::Mesh, Variant::Inconsistent, 10);
+    let sp = slvs::build(&p).unwrap();
+    let d = sp.system.diagnose(slvs::SOLVE_GROUP).unwrap();
+    assert_eq!(d.outcome, loci::Outcome::Inconsistent);
+    assert_eq!(d.conflicting.len(), 1, "{:?}", d.conflicting);
+    let set = &d.conflicting[0];
+    assert!(set.verified);
+    assert_eq!(set.members.len(), 6, "{:?}", set.members);
+    let last = sp.system.constraints().last().unwrap().h;
+    assert!(
+        set.members.contains(&loci::Member::Constraint(last)),
+        "{:?}",
+        set.members
+    );
+    let mut sys = sp.system.clone();
+    let r = loci::solve(
+        &mut sys,
+        slvs::SOLVE_GROUP.into(),
+        &[],
+        &loci::Config::default(),
+    )
+    .unwrap();
+    assert_eq!(r.failed.len(), 6, "{:?}", r.failed);
+}
+
 #[test]
 fn checker_catches_a_wrong_answer() {
     let p = generate(Family::Fillets, Variant::Solvable, 10);

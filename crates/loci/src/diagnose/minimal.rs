@@ -255,6 +255,13 @@ fn solve_set(
     Alone::Converged
 }
 
+/// Whether the constraints of `set` can all hold: [`consistent`] on their equations. False
+/// for a set with a member that has no equations here.
+pub(crate) fn holds(eqs: &Equations, set: &[Member], starts: &[&[f64]], cfg: &Config) -> bool {
+    let kernels: Option<Vec<usize>> = set.iter().map(|&m| eqs.kernel_of(m)).collect();
+    kernels.is_some_and(|k| k.is_empty() || consistent(eqs, &k, starts, cfg))
+}
+
 /// Whether `set` fails as a whole, without shrinking it: one check, for sets too large for the
 /// deletion filter's one solve per member.
 pub(crate) fn fails(eqs: &Equations, set: &[Member], starts: &[&[f64]], cfg: &Config) -> bool {

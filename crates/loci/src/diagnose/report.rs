@@ -172,7 +172,9 @@ pub struct Diagnosis {
     pub residual: f64,
     /// Blocks with more equations than unknowns, found by counting before any numerics.
     pub structural: Vec<OverConstrained>,
-    /// Minimal sets of constraints that cannot hold together, smallest first.
+    /// Minimal sets of constraints that cannot hold together, smallest first. A set that
+    /// holds once the constraints shared by every set before it are left out is not listed:
+    /// changing those ends it too.
     pub conflicting: Vec<ConflictSet>,
     /// Sets of constraints that hold but are not needed.
     pub redundant: Vec<RedundantSet>,
