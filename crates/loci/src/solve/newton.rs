@@ -141,6 +141,13 @@ const TRUNCATIONS: [f64; 4] = [0.0, 1e-8, 1e-6, 1e-4];
 /// fraction of the dropped rows' (see `stuck` in [`Component::solve`]).
 const STUCK: f64 = 1e-2;
 
+/// The rule of [`STUCK`] applies only where more rows than this are dropped: there a window of
+/// plain steps without progress costs factorisations of a large system, while in a small one
+/// those steps reach the point where the kept rows hold, whose dropped rows' circuits name a
+/// conflict (three random systems with one planted contradiction, switched to damped steps
+/// early, ended at a least-squares point where no conflict could be shown).
+const STUCK_ROWS: usize = 32;
+
 /// A step that moved no unknown by more than this (relative to it) leaves `G` close enough
 /// for the next step to be solved with the factorisation it was taken with, refined.
 const REUSE_MOVE: f64 = 1e-4;
@@ -734,7 +741,7 @@ impl Component {
             // dropped ones at 2.5), further plain steps converge to a point where the
             // dropped rows still miss, and only damped steps, which weigh every row, move
             // on. Take them now rather than after a window of steps without progress.
-            let stuck = damping.is_none() && !left_out.is_empty() && {
+            let stuck = damping.is_none() && left_out.len() > STUCK_ROWS && {
                 let dropped = left_out.iter().fold(0.0f64, |a, &d| a.max(r[d].abs()));
                 let mut kept = 0.0f64;
                 let mut next = left_out.iter().copied().peekable();
