@@ -258,7 +258,7 @@ impl Gram {
         // itself (counted as the products that make it), no ordering or symbolic analysis is
         // needed. Small components are factorised within their envelope whatever its shape.
         let first = envelope(nrows, columns, None);
-        if nrows <= DENSE_MAX || envelope_len(&first) <= 2 * pairs {
+        if nrows <= DENSE_MAX || bands(&first, pairs) {
             return Some(Gram::Banded(Box::new(Banded::new(first, columns, None))));
         }
         // Equations in another order (implicit ones last, a chain given shuffled) may still
@@ -277,7 +277,7 @@ impl Gram {
             pos[r as usize] = p as u32;
         }
         let first = envelope(nrows, columns, Some(&pos));
-        if envelope_len(&first) <= 2 * pairs {
+        if bands(&first, pairs) {
             return Some(Gram::Banded(Box::new(Banded::new(
                 first,
                 columns,
@@ -383,6 +383,34 @@ fn envelope(nrows: usize, columns: &Columns, pos: Option<&[u32]>) -> Vec<u32> {
         }
     }
     first
+}
+
+/// Whether `G`, its rows starting at `first`, is best factorised within its envelope: the
+/// envelope is about the size of `G` itself (`pairs` products build it), and so is the work.
+///
+/// The work of an envelope LDLᵀ grows as the sum of the squared row widths. A chain's rows
+/// are a few entries wide (the sum is 1.3 to 2 times `pairs` on the benchmark's chains and
+/// fillets); a sheet of closed profiles renumbered by Cuthill-McKee has an envelope within
+/// twice `pairs` but rows 40 wide, 50 to 190 times `pairs` of work, where the sparse
+/// factorisation took 10-35% less time per solve (10x10 to 20x20 profiles).
+fn bands(first: &[u32], pairs: usize) -> bool {
+    envelope_len(first) <= 2 * pairs && envelope_work(first) <= ENVELOPE_WORK * pairs as f64
+}
+
+/// The most work (sum of squared row widths) per product of `G` at which its envelope is
+/// factorised rather than a fill-reducing sparse factorisation (see [`bands`]).
+const ENVELOPE_WORK: f64 = 16.0;
+
+/// The sum of the squared widths of the envelope's rows.
+fn envelope_work(first: &[u32]) -> f64 {
+    first
+        .iter()
+        .enumerate()
+        .map(|(c, &f)| {
+            let w = (c + 1 - f as usize) as f64;
+            w * w
+        })
+        .sum()
 }
 
 /// The number of entries in the envelope whose rows start at `first`.
