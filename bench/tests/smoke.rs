@@ -109,6 +109,7 @@ fn profiles_solve_with_every_angle_on_its_intended_side() {
             let (s, e) = (out.points[a], out.points[b]);
             [e[0] - s[0], e[1] - s[1]]
         };
+        let s = start_points(&p);
         let mut turned = 0;
         for c in &p.cons {
             if let Con::Angle { l1, l2, deg } = *c {
@@ -121,7 +122,6 @@ fn profiles_solve_with_every_angle_on_its_intended_side() {
                     "{}: angle {got} for {deg}",
                     p.label()
                 );
-                let s = start_points(&p);
                 let (su, sv) = (
                     [
                         s[p.lines[l1][1]][0] - s[p.lines[l1][0]][0],
