@@ -364,9 +364,8 @@ impl Builder<'_> {
                 // holds neither at the target plus 180 degrees nor where B's direction lies
                 // along the axis (no angle about the axis there: the residual is half a turn).
                 // The plane reads A's carried origin and axis by their own parameters, tied
-                // to A's pose by their implicit equations; a conflict set is checked without
-                // those, so two angles that fight are named only when something else (a
-                // hinge) holds B's direction in the plane.
+                // to A's pose by their implicit equations, which a conflict set is checked
+                // with: two angles that fight are named with or without a hinge.
                 let (s, c) = target.sin_cos();
                 let u = math::cross(axis, a.d);
                 let t = math::add(math::scale(a.d, c), math::scale(u, s));

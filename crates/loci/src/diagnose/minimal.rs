@@ -8,7 +8,7 @@ use super::unmerged::{Equations, CONSTANT};
 use crate::equations::{Equation, Kernel, Rows};
 use crate::solve::newton::{Component, Scratch};
 use crate::solve::Config;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// Whether the equations of `kernels` can all hold: Newton on them alone converges from one
 /// of `starts` (each a value for every parameter: where the solve stopped, the drawing), or
@@ -53,6 +53,8 @@ fn check(
         cfg.max_iterations.max(Config::default().max_iterations)
     };
     let cfg = &cfg.clone().with_max_iterations(budget);
+    let with_background = with_implicit(eqs, kernels);
+    let kernels = &with_background[..];
     let nudges: &[f64] = if quick { &[0.0] } else { &[0.0, 1e-3] };
     if starts
         .iter()
@@ -65,6 +67,46 @@ fn check(
             construct(eqs, kernels, start, &|_| 1.0, cfg).is_some()
                 || other_turns_hold(eqs, kernels, start, cfg)
         })
+}
+
+/// `kernels` and the implicit conditions of the entities they read (and of the entities
+/// those read, and so on): a set is checked against what its entities are, not only against
+/// its own equations. An implicit condition is no constraint a user could change (a unit
+/// quaternion, an arc's equal radii, a plane carried by a part's pose): without it a set
+/// could hold only by breaking one (two angles about an axis a free part carries both held
+/// once the plane they are measured in tilted off the part). Whether a member that is itself
+/// an implicit condition is needed is then never in question, and the deletion filter leaves
+/// it out of the named set.
+fn with_implicit(eqs: &Equations, kernels: &[usize]) -> Vec<usize> {
+    let mut out = kernels.to_vec();
+    if eqs.implicit.is_empty() {
+        return out;
+    }
+    let implicit: Vec<usize> = eqs
+        .implicit
+        .iter()
+        .copied()
+        .filter(|k| !kernels.contains(k))
+        .collect();
+    let mut cols: HashSet<u32> = kernels
+        .iter()
+        .flat_map(|&k| eqs.blocks[k].cols.iter().copied())
+        .collect();
+    let mut left = implicit;
+    loop {
+        let (reached, rest): (Vec<usize>, Vec<usize>) = left
+            .into_iter()
+            .partition(|&k| eqs.blocks[k].cols.iter().any(|c| cols.contains(c)));
+        if reached.is_empty() {
+            break;
+        }
+        for &k in &reached {
+            cols.extend(eqs.blocks[k].cols.iter().copied());
+        }
+        out.extend(reached);
+        left = rest;
+    }
+    out
 }
 
 /// The most 2D angles whose every combination of turns a check tries.

@@ -24,6 +24,8 @@ pub(crate) struct Block {
 /// All equations of a group, unmerged, with the sparsity of their Jacobian.
 pub(crate) struct Equations {
     pub kernels: Vec<Kernel>,
+    /// The kernels of entities' implicit conditions, ascending.
+    pub implicit: Vec<usize>,
     pub blocks: Vec<Block>,
     /// Per parameter (in [`System::params`] order): its column, or [`CONSTANT`].
     pub col_of_param: Vec<u32>,
@@ -119,8 +121,12 @@ impl Equations {
             row += k.rows;
             jv += k.rows * w;
         }
+        let implicit = (0..kernels.len())
+            .filter(|&k| matches!(kernels[k].owner, Owner::Entity(_)))
+            .collect();
         Ok(Self {
             kernels,
+            implicit,
             blocks,
             col_of_param,
             param_of_col,

@@ -436,7 +436,8 @@ pub(crate) struct Banded {
     /// `(column, index into J's values)`, by column.
     row_ptr: Vec<usize>,
     row_entries: Vec<(u32, u32)>,
-    /// The columns of `J`.
+    /// The columns of `J`, each entry `(position of its row, index into J's values)`, by
+    /// position: a row of `G` reads each column only up to its own position.
     columns: Columns,
     /// The row at each position and the position of each row, when renumbered.
     order: Option<(Vec<u32>, Vec<u32>)>,
@@ -459,10 +460,7 @@ impl Banded {
             jv: Vec::new(),
             row_ptr,
             row_entries,
-            columns: Columns {
-                ptr: columns.ptr.clone(),
-                entries: columns.entries.clone(),
-            },
+            columns: by_position(columns, order.as_ref().map(|o| &o.1[..])),
             order,
             tmp,
         }
@@ -511,9 +509,29 @@ impl Banded {
     }
 }
 
+/// The columns of `J` with each entry's row replaced by its position (`pos`, or the row
+/// itself), sorted by position within each column.
+fn by_position(columns: &Columns, pos: Option<&[u32]>) -> Columns {
+    let mut entries: Vec<(u32, u32)> = columns
+        .entries
+        .iter()
+        .map(|&(r, a)| (pos.map_or(r, |p| p[r as usize]), a))
+        .collect();
+    for c in 0..columns.len() {
+        let (s, e) = (columns.ptr[c] as usize, columns.ptr[c + 1] as usize);
+        entries[s..e].sort_unstable_by_key(|&(q, _)| q);
+    }
+    Columns {
+        ptr: columns.ptr.clone(),
+        entries,
+    }
+}
+
 /// The entries of row `p` (in position order) of `G` from column `f` to the diagonal, into
 /// `out`: the products of the row of `J` at `p` with each row at a position up to `p` sharing
-/// a column, each entry's summed in the order of the columns of `J`.
+/// a column (`by_pos`, sorted by position, read up to `p`), each entry's summed in the order
+/// of the columns of `J` (a row meets a column once, so the order within a column does not
+/// change any sum).
 #[allow(clippy::too_many_arguments)]
 #[inline]
 fn row_of_g(
@@ -523,18 +541,19 @@ fn row_of_g(
     jv: &[f64],
     row_ptr: &[usize],
     row_entries: &[(u32, u32)],
-    columns: &Columns,
+    by_pos: &Columns,
     order: Option<&(Vec<u32>, Vec<u32>)>,
 ) {
     out.fill(0.0);
     let i = order.map_or(p, |o| o.0[p] as usize);
     for &(c, a) in &row_entries[row_ptr[i]..row_ptr[i + 1]] {
         let x = jv[a as usize];
-        for &(j, b) in columns.col(c as usize) {
-            let q = order.map_or(j, |o| o.1[j as usize]) as usize;
-            if q <= p {
-                out[q - f] += x * jv[b as usize];
+        for &(q, b) in by_pos.col(c as usize) {
+            let q = q as usize;
+            if q > p {
+                break;
             }
+            out[q - f] += x * jv[b as usize];
         }
     }
 }

@@ -327,13 +327,19 @@ fn two_angles_between_the_same_free_parts_fight_and_nothing_else_does() {
     assert_ne!(r.mate(&hinge).unwrap().status, MateStatus::Conflicting);
 
     // Without the hinge the two angles still cannot both hold: no pose is accepted (B's
-    // edge along A's axis used to satisfy both, as `b ⟂ axis × t`), and both are reported
-    // unsatisfied. (They are not named as a conflict here: checked alone, the plane A
-    // carries may tilt off A, see the note in `Prim::SignedAngle`.)
+    // edge along A's axis used to satisfy both, as `b ⟂ axis × t`), and they are named as
+    // the conflict. The pair is checked with the plane each is measured in held to A's pose
+    // (its implicit condition): left free, that plane tilted off A and both angles held.
     asm.mates.retain(|m| m.id != hinge);
     let r = asm.solve().unwrap();
     assert!(!r.outcome.is_ok(), "{r}");
+    assert_eq!(r.conflicts, vec![vec![a30.clone(), a40.clone()]], "{r}");
     for id in [&a30, &a40] {
-        assert_eq!(r.mate(id).unwrap().status, MateStatus::Unsatisfied, "{r}");
+        assert_eq!(r.mate(id).unwrap().status, MateStatus::Conflicting, "{r}");
     }
+    assert!(
+        r.to_string()
+            .contains("conflict: {ANGL1, ANGL2} cannot all hold"),
+        "{r}"
+    );
 }
