@@ -3,9 +3,12 @@
 
 usage: mesh_tables.py ONE_THREAD_DIR[,DIR...] TWO_THREAD_DIR[,DIR...]
 
-Each DIR holds the benchmarks.json of one run of loci and ezpz. Times are the medians over
-the runs of each run's median; the ratio is taken within each run (both solvers timed in
-the same process on the same machine state), then its median over runs.
+Each DIR holds the benchmarks.json of one run of loci and ezpz (and, when the one-thread runs
+have them, SolveSpace through its C library and PlaneGCS, each given a column). Times are the
+medians over the runs of each run's median; the ratio is taken within each run (both solvers
+timed in the same process on the same machine state), then its median over runs. A peer's cell
+is its time when it solved the problem (or, on the inconsistent variant, reported it as such),
+otherwise what it said.
 """
 import json
 import math
@@ -45,6 +48,34 @@ def med(xs):
     return statistics.median(xs) if xs else None
 
 
+PEERS = [("slvs_c", "SolveSpace"), ("plane_gcs", "PlaneGCS")]
+
+
+def peer(runs, fam, var, size, solver):
+    cells = [c for c in (cell(r, fam, var, size, solver) for r in runs) if c]
+    if not cells:
+        return "—"
+    good = [c["solve_ms"] for c in cells
+            if c["verdict"]["verdict"] in ("solved", "detected") and c.get("solve_ms")]
+    if good:
+        return ms(med(good))
+    c = cells[0]
+    v = c["verdict"]
+    detail = v.get("detail", "") or c.get("detail", "")
+    if v["verdict"] == "not_run":
+        return "not run" if "out of memory" in v.get("reason", "") or "refuses" in v.get(
+            "reason", "") else "—"
+    if v["verdict"] == "timeout":
+        return f"over {v.get('limit_s', 0):.0f} s"
+    if v["verdict"] == "refused":
+        return "refuses: " + detail.split(" (")[0]
+    if "out of memory" in detail:
+        return "out of memory"
+    said = detail.replace("failed: ", "").split(" (")[0]
+    t = f"{ms(c['solve_ms'])}, " if c.get("solve_ms") else ""
+    return f"{t}fails: {said}" if said else c["verdict"]["verdict"]
+
+
 def main():
     one, two = load(sys.argv[1]), load(sys.argv[2])
     fams = sorted({(c["family"], c["variant"]) for r in one for c in r},
@@ -52,8 +83,16 @@ def main():
     for fam, var in fams:
         sizes = sorted({c["size"] for r in one for c in r if (c["family"], c["variant"]) == (fam, var)})
         print(f"### {fam} / {var}\n")
-        print("| size | unknowns | ezpz | loci, 1 thread | ratio | loci, 2 threads | 2 / 1 threads |")
-        print("| ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+        peers = [(k, name) for k, name in PEERS
+                 if any(c["solver"] == k and (c["family"], c["variant"]) == (fam, var)
+                        for r in one for c in r)]
+        heads = "".join(f" {name} |" for _, name in peers)
+        # A lattice of points has two unknowns a point; a sheet of profiles has its slots too.
+        lattice = fam in ("truss", "mesh")
+        unk = " unknowns |" if lattice else ""
+        print(f"| size |{unk} ezpz |{heads} loci, 1 thread | ezpz / loci | loci, 2 threads "
+              "| 2 / 1 threads |")
+        print("| ---: |" + " ---: |" * (lattice + 1 + len(peers)) + " ---: | ---: | ---: | ---: |")
         pts = []
         for s in sizes:
             side = round(math.sqrt(s))
@@ -68,7 +107,10 @@ def main():
             l2 = med([(cell(r, fam, var, s, "loci") or {}).get("solve_ms") for r in two])
             t21 = f"{l2 / lo:.2f}" if l2 and lo else "—"
             rt = f"{ratio:.1f}×" if ratio else "—"
-            print(f"| {side}×{side} | {2 * s:,} | {ms(ez)} | {ms(lo)} | {rt} | {ms(l2)} | {t21} |")
+            cols = "".join(f" {peer(one, fam, var, s, k)} |" for k, _ in peers)
+            unk = f" {2 * s:,} |" if lattice else ""
+            print(f"| {side}×{side} |{unk} {ms(ez)} |{cols} {ms(lo)} | {rt} | {ms(l2)} "
+                  f"| {t21} |")
             if lo and s >= 400:
                 pts.append((math.log(s), math.log(lo)))
         if len(pts) >= 2:
