@@ -375,7 +375,24 @@ fn conflict_sets(
     // impossible dimension in a mesh, every circuit through it reads as conflicting, and each
     // failing check runs a solve to its end).
     candidates.sort_by_key(Vec::len);
-    for c in candidates {
+    // The candidate less the constraints every conflict shown so far shares (of the first
+    // one's), when it has any of them.
+    let rest_of = |c: &[Member], out: &[ConflictSet]| -> Option<Vec<Member>> {
+        let first = out.first()?;
+        let shared: Vec<Member> = first
+            .members
+            .iter()
+            .filter(|m| c.contains(m) && out.iter().all(|o| o.members.contains(m)))
+            .copied()
+            .collect();
+        (!shared.is_empty()).then(|| c.iter().filter(|m| !shared.contains(m)).copied().collect())
+    };
+    // Whether every candidate from here on that has a rest was found to hold without the
+    // shared constraints, all at once; and how many conflicts were shown when that was last
+    // tried (it is tried again only once another is shown).
+    let mut rests_hold = false;
+    let mut union_tried: Option<usize> = None;
+    for (i, c) in candidates.iter().enumerate() {
         if out.iter().any(|o| o.members.iter().all(|m| c.contains(m))) {
             continue;
         }
@@ -384,28 +401,43 @@ fn conflict_sets(
         // nothing new to change, and one check here saves the deletion filter's solve per
         // member (one wrong diagonal in a 10x10 mesh: 45 sets of 6 to 124 constraints named,
         // each shrunk, 0.2 s; a 30x30 mesh took over 20 s).
-        if let Some(first) = out.first() {
-            let shared: Vec<Member> = first
-                .members
-                .iter()
-                .filter(|m| c.contains(m) && out.iter().all(|o| o.members.contains(m)))
-                .copied()
-                .collect();
-            if !shared.is_empty() {
-                let rest: Vec<Member> = c.iter().filter(|m| !shared.contains(m)).copied().collect();
-                if minimal::holds(eqs, &rest, starts, cfg) {
+        if let Some(rest) = rest_of(c, &out) {
+            if rests_hold {
+                continue;
+            }
+            // The rests of this candidate and of every later one together first: when they
+            // hold, so does each (a subset of constraints that hold together holds), and one
+            // solve replaces one per candidate (a 20x20 mesh: 400 candidates). Named sets
+            // change the rests only when a check fails, and then each is checked as before.
+            if union_tried != Some(out.len()) {
+                union_tried = Some(out.len());
+                let mut union: Vec<Member> = rest.clone();
+                let mut others = 0;
+                for later in &candidates[i + 1..] {
+                    if let Some(r) = rest_of(later, &out) {
+                        union.extend(r);
+                        others += 1;
+                    }
+                }
+                union.sort_by(Member::report_order);
+                union.dedup();
+                if others > 0 && minimal::holds(eqs, &union, starts, cfg) {
+                    rests_hold = true;
                     continue;
                 }
+            }
+            if minimal::holds(eqs, &rest, starts, cfg) {
+                continue;
             }
         }
         // A set too large to shrink is kept when it fails as a whole, but not called
         // verified: no one checked that every member is needed.
         let (members, verified, fails) = if c.len() <= minimise_up_to {
-            let (m, v) = minimal::minimise(eqs, &c, starts, cfg);
+            let (m, v) = minimal::minimise(eqs, c, starts, cfg);
             (m, v, v)
         } else {
-            let fails = minimal::fails(eqs, &c, starts, cfg);
-            (c, false, fails)
+            let fails = minimal::fails(eqs, c, starts, cfg);
+            (c.clone(), false, fails)
         };
         if fails && done.insert(members.clone()) {
             out.push(ConflictSet { members, verified });
