@@ -836,6 +836,14 @@ mod tests {
         (g.dropped(), y)
     }
 
+    /// `J v` for a fixed `v` over `ncols` unknowns: a right-hand side the rows can all meet.
+    fn consistent_rhs(rows: &[Vec<(usize, f64)>], ncols: usize) -> Vec<f64> {
+        let v: Vec<f64> = (0..ncols).map(|c| ((c * 7) % 11) as f64 - 5.0).collect();
+        rows.iter()
+            .map(|row| row.iter().map(|&(c, x)| x * v[c]).sum())
+            .collect()
+    }
+
     #[test]
     fn supernodal_and_simplicial_agree_on_a_truss_with_a_dependent_row() {
         for extra in [false, true] {
@@ -844,11 +852,7 @@ mod tests {
             let jv = values(&rows);
             let ncols = 2 * n * n - 2;
             // A consistent right-hand side (J v for some v) and an inconsistent one.
-            let v: Vec<f64> = (0..ncols).map(|c| ((c * 7) % 11) as f64 - 5.0).collect();
-            let consistent: Vec<f64> = rows
-                .iter()
-                .map(|row| row.iter().map(|&(c, x)| x * v[c]).sum())
-                .collect();
+            let consistent = consistent_rhs(&rows, ncols);
             let inconsistent: Vec<f64> = (0..m).map(|r| ((r * 5) % 9) as f64 - 4.0).collect();
             let mut simplicial = Gram::with(m, &columns, Sparse::Simplicial).unwrap();
             let mut supernodal = Gram::with(m, &columns, Sparse::Supernodal).unwrap();
@@ -909,11 +913,7 @@ mod tests {
         let jv = values(&rows);
         let n = 10;
         let ncols = 2 * n * n - 2;
-        let v: Vec<f64> = (0..ncols).map(|c| ((c * 7) % 11) as f64 - 5.0).collect();
-        let rhs: Vec<f64> = rows
-            .iter()
-            .map(|row| row.iter().map(|&(c, x)| x * v[c]).sum())
-            .collect();
+        let rhs = consistent_rhs(&rows, ncols);
         let (d1, y1) = factor_and_solve(&mut banded, &jv, &rhs);
         let (d2, y2) = factor_and_solve(&mut sparse, &jv, &rhs);
         // Each drops one row of the first cell's circuit (its four sides and two diagonals),
