@@ -12,6 +12,7 @@
 
 use super::unmerged::{Equations, Linear};
 use crate::solve::gram::{Columns, Gram};
+use crate::solve::rank;
 use crate::solve::Config;
 
 /// A minimal dependent set of rows.
@@ -44,11 +45,15 @@ impl Rank {
         }
         // At a solution the rank is checked where rounding could hide a dependence, as the
         // solver checks it; where the solve stopped short, near-dependence is the conflict
-        // itself and is left to the circuits and their verification.
+        // itself and is left to the circuits and their verification, only the count checked
+        // as the solver checks it.
         let dropped = if lin.r.iter().all(|v| v.abs() <= cfg.tolerance) {
-            crate::solve::rank::reveal(&mut gram, &columns, &lin.jn, cfg.rank_tolerance)
+            rank::reveal(&mut gram, &columns, &lin.jn, cfg.rank_tolerance)
         } else {
-            gram.dropped()
+            let mut k = rank::counts_by_unknowns(eqs.rows, columns.len())
+                .then(|| Gram::of_unknowns(eqs.rows, &columns))
+                .flatten();
+            rank::short_of_solution(&mut gram, k.as_mut(), &columns, &lin.jn, cfg.rank_tolerance)
         };
         Some(Self { gram, dropped })
     }
@@ -77,6 +82,13 @@ pub(crate) fn circuits(
     let m = eqs.rows;
     let mut out = Vec::with_capacity(rank.dropped.len());
     let mut b = Vec::new();
+    // A basis with a pivot within `REFINE_BELOW` of the rank tolerance leaves rounding of
+    // about 1e-6 in the coefficients (the normal equations square its conditioning), as
+    // large as `COEFF_EPS`: a circuit then spreads over hundreds of rows (a 75x75 mesh with
+    // one impossible diagonal named 234 constraints for 6). One step of refinement against
+    // `Jn` itself takes that rounding to the square of it.
+    let refine = rank.gram.smallest_kept_pivot() <= cfg.rank_tolerance * REFINE_BELOW;
+    let (mut d, mut v) = (Vec::new(), Vec::new());
     for batch in rank.dropped.chunks(BATCH) {
         // b = Jn Jn_kᵀ for each row k of the batch, one column after another. An empty row
         // (only constants, or no first-order effect) gets a column of zeros and is not read.
@@ -92,6 +104,18 @@ pub(crate) fn circuits(
             }
         }
         rank.gram.solve_many(&mut b, batch.len());
+        if refine {
+            refine_once(
+                eqs,
+                lin,
+                &mut rank.gram,
+                &rank.dropped,
+                batch,
+                &mut b,
+                &mut d,
+                &mut v,
+            );
+        }
         for (j, &k) in batch.iter().enumerate() {
             if lin.inv[k] == 0.0 {
                 // It stands alone and holds or not by its value.
@@ -120,6 +144,50 @@ pub(crate) fn circuits(
         }
     }
     out
+}
+
+/// Kept pivots up to this multiple of the rank tolerance make [`circuits`] refine its
+/// coefficients.
+const REFINE_BELOW: f64 = 1e4;
+
+/// One step of iterative refinement of the coefficients `b` (one column of `m` per row of
+/// `batch`, as solved with `gram`'s factors, `dropped` its dropped rows): the part of each row `Jn_k` the combination
+/// `Jnᵀ c` misses, `Jn_kᵀ - Jnᵀ c`, is taken back to the rows, and the correction solved for
+/// with the same factors (the corrected semi-normal equations). `d` and `v` are work space.
+#[allow(clippy::too_many_arguments)]
+fn refine_once(
+    eqs: &Equations,
+    lin: &Linear,
+    gram: &mut Gram,
+    dropped: &[usize],
+    batch: &[usize],
+    b: &mut [f64],
+    d: &mut Vec<f64>,
+    v: &mut Vec<f64>,
+) {
+    let (m, n) = (eqs.rows, eqs.columns.len());
+    d.clear();
+    d.resize(m * batch.len(), 0.0);
+    v.resize(n, 0.0);
+    for (j, &k) in batch.iter().enumerate() {
+        let c = &b[j * m..(j + 1) * m];
+        eqs.mul_t(lin, c, v);
+        for x in v.iter_mut() {
+            *x = -*x;
+        }
+        for (col, ik) in eqs.row_entries(k) {
+            v[col as usize] += lin.jn[ik as usize];
+        }
+        let dj = &mut d[j * m..(j + 1) * m];
+        eqs.mul(lin, v, dj);
+        for &r in dropped {
+            dj[r] = 0.0;
+        }
+    }
+    gram.solve_many(d, batch.len());
+    for (x, dx) in b.iter_mut().zip(d.iter()) {
+        *x += dx;
+    }
 }
 
 /// Whether the point is stationary for the least-squares problem, `Jnᵀ rn ≈ 0`, with residuals

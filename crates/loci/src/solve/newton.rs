@@ -1104,13 +1104,21 @@ impl Component {
             too_large: false,
         };
         self.gram = gram_slot;
+        if !converged && factored && rank::counts_by_unknowns(m, ncols) && self.unknowns.is_none() {
+            self.unknowns = Some(Gram::of_unknowns(m, &self.columns));
+        }
         if let (Some(gram), true) = (self.gram.as_mut(), factored) {
             // At a solution, the rank is checked where rounding could hide a dependence; where
-            // the solve stopped short, near-dependence is the conflict itself.
+            // the solve stopped short, near-dependence is the conflict itself, and only the
+            // count is checked.
             fin.dropped = if converged {
                 rank::reveal(gram, &self.columns, jn, cfg.rank_tolerance)
             } else {
-                gram.dropped()
+                let k = match &mut self.unknowns {
+                    Some(Some(k)) if rank::counts_by_unknowns(m, ncols) => Some(k),
+                    _ => None,
+                };
+                rank::short_of_solution(gram, k, &self.columns, jn, cfg.rank_tolerance)
             };
             if cfg.find_failed {
                 fin.dependencies = rank::dependencies(gram, &self.columns, jn, &fin.dropped, m);

@@ -75,6 +75,128 @@ pub(crate) fn reveal(gram: &mut Gram, columns: &Columns, jn: &[f64], eps: f64) -
     out
 }
 
+/// Whether [`short_of_solution`] counts the free directions through `K = Jᵀ J` for equations
+/// of `nrows` rows in `ncols` unknowns: more rows than unknowns (else `K` has a direction per
+/// missing row, and `G` is the smaller), and enough of them for rounding to matter.
+pub(crate) fn counts_by_unknowns(nrows: usize, ncols: usize) -> bool {
+    nrows > ncols && ncols >= 64
+}
+
+/// The rows dependent on the others where a solve stopped short of a solution (the
+/// least-squares point of equations that cannot all hold), from `gram` factorised (at
+/// `lambda = 0`) with the rank tolerance `eps` from the normalised Jacobian values `jn`.
+///
+/// There near-dependence is the conflict itself, and the pivots are read as they are, with
+/// one check where rounding decides: a mesh with more equations than unknowns drops thousands
+/// of dependent rows, and the pivot of the last one eliminated can carry enough rounding to
+/// land just above `eps` (1.08e-10 for 1e-10 on a 75x75 mesh with one impossible diagonal:
+/// its rotation about the pinned point was lost, dof 0 for 1, and the circuits computed
+/// against that nearly singular basis ran through hundreds of rows). Raising the tolerance
+/// does not help there: the next few pivots are as close, and dropping one keeps another.
+///
+/// So `k = Jᵀ J` (its structure from [`Gram::of_unknowns`], for [`counts_by_unknowns`]
+/// equations) counts the free directions of the unknowns, each confirmed in `J` itself, and
+/// where the rows `G` kept are more than that count leaves independent, the dependence among
+/// them is found by inverse iteration with `G`'s factors (its near-null vector `y`, confirmed
+/// by `‖Jᵀ y‖² <= eps ‖y‖²`) and the row with the largest share in it is dropped, `G` being
+/// factorised again without it; once per missing row (three at 100x100). Where that fails,
+/// `G` is read as it was. `gram` is left factorised without the rows returned (its factors
+/// those of the rows kept, as the dropped rows' circuits need).
+pub(crate) fn short_of_solution(
+    gram: &mut Gram,
+    k: Option<&mut Gram>,
+    columns: &Columns,
+    jn: &[f64],
+    eps: f64,
+) -> Vec<usize> {
+    let base = gram.dropped();
+    let (m, n) = (gram.rows(), columns.len());
+    let Some(k) = k else {
+        return base;
+    };
+    let Some(free) = super::unknowns::free_count(k, m, columns, jn, eps) else {
+        return base;
+    };
+    // The rows less the rank, n - free.
+    let target = m - n.saturating_sub(free).min(m);
+    if base.len() >= target || target - base.len() > MAX_MISSING {
+        return base;
+    }
+    let mut without = jn.to_vec();
+    let mut dropped = base.clone();
+    let mut y = vec![0.0; m];
+    let mut g = vec![0.0; n];
+    while dropped.len() < target {
+        for (i, v) in y.iter_mut().enumerate() {
+            *v = generic(i, dropped.len());
+        }
+        for _ in 0..INVERSE_STEPS {
+            for &d in &dropped {
+                y[d] = 0.0;
+            }
+            gram.solve(&mut y);
+            let size = y.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            if !(size > 0.0 && size.is_finite()) {
+                break;
+            }
+            y.iter_mut().for_each(|v| *v /= size);
+        }
+        // Jᵀ y, with the rows already dropped left out.
+        for (c, col) in columns.iter().enumerate() {
+            g[c] = col
+                .iter()
+                .map(|&(row, idx)| without[idx as usize] * y[row as usize])
+                .sum();
+        }
+        let gg: f64 = g.iter().map(|v| v * v).sum();
+        let yy: f64 = y.iter().map(|v| v * v).sum();
+        let Some(worst) = (0..m)
+            .filter(|i| dropped.binary_search(i).is_err())
+            .max_by(|&a, &b| y[a].abs().total_cmp(&y[b].abs()))
+        else {
+            break;
+        };
+        if !(gg <= eps * yy) {
+            break;
+        }
+        // Factorised again on the rows kept, less that one: every dropped row is zeroed, as
+        // the rows kept may otherwise swap one of them back in, the count unchanged.
+        let mut out = vec![false; m];
+        for &d in dropped.iter().chain([&worst]) {
+            out[d] = true;
+        }
+        for col in columns.iter() {
+            for &(row, idx) in col {
+                if out[row as usize] {
+                    without[idx as usize] = 0.0;
+                }
+            }
+        }
+        gram.assemble(&without);
+        if !gram.factor(0.0, eps) {
+            break;
+        }
+        let now = gram.dropped();
+        if now.len() <= dropped.len() || now.len() > target {
+            break;
+        }
+        dropped = now;
+    }
+    if dropped.len() == target {
+        return dropped;
+    }
+    gram.assemble(jn);
+    gram.factor(0.0, eps);
+    base
+}
+
+/// The most rows [`short_of_solution`] drops beyond those the factorisation dropped.
+const MAX_MISSING: usize = 8;
+
+/// Steps of inverse iteration for the dependence among the kept rows. Three left it confirmed
+/// in `J` by far on the 75x75 and 100x100 meshes, `‖Jᵀ y‖² / ‖y‖²` at 1e-26 to 1e-24.
+const INVERSE_STEPS: usize = 3;
+
 /// `rhs = J J_kᵀ` for the row with `entries` (column, index into `jn`).
 fn gram_column(columns: &Columns, jn: &[f64], entries: &[(usize, u32)], rhs: &mut [f64]) {
     for &(c, ik) in entries {

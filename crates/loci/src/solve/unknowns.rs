@@ -19,7 +19,7 @@
 //! moved along the free directions to the point nearest the drawing, which is the step
 //! through `G` with the slide folded in.
 
-use super::gram::Gram;
+use super::gram::{Columns, Gram};
 use super::newton::{generic, Component, Finish, PROJECTED, SLIDE_NOISE};
 use super::rank::{DEPENDENCY_BLOCK, UNION_PROBES};
 use super::Config;
@@ -171,7 +171,7 @@ impl Component {
             }
             if !dropped.is_empty() {
                 let nf = dropped.len();
-                self.free_directions(k, &jn, &dropped, &mut free, &mut t);
+                free_directions(k, columns, &jn, &dropped, &mut free, &mut t);
                 // Along them to the point nearest the drawing: u + V a, with
                 // (Vᵀ V) a = Vᵀ (z - u) and z the drawing in scaled unknowns.
                 let mut a = vec![0.0; nf * nf];
@@ -235,45 +235,106 @@ impl Component {
     }
 }
 
-impl Component {
-    /// Into `free` (`dropped.len()` vectors of the unknowns, one after another), each
-    /// direction in which the equations do not move, from `k` factorised with the columns
-    /// `dropped` dropped: 1 on its dropped unknown, 0 on the others, the kept ones moving so
-    /// that no equation changes, `K_kk v_k = -K_kd`. `t` is work space of one per row.
-    fn free_directions(
-        &self,
-        k: &mut Gram,
-        jn: &[f64],
-        dropped: &[usize],
-        free: &mut Vec<f64>,
-        t: &mut [f64],
-    ) {
-        let (ncols, columns) = (self.columns.len(), &self.columns);
-        free.clear();
-        free.resize(dropped.len() * ncols, 0.0);
-        for (f, &d) in dropped.iter().enumerate() {
-            t.fill(0.0);
-            for &(row, idx) in columns.col(d) {
-                t[row as usize] += jn[idx as usize];
-            }
-            let v = &mut free[f * ncols..(f + 1) * ncols];
-            for (c, col) in columns.iter().enumerate() {
-                let mut acc = 0.0;
-                for &(row, idx) in col {
-                    acc -= jn[idx as usize] * t[row as usize];
-                }
-                v[c] = acc;
-            }
+/// Into `free` (`dropped.len()` vectors of the unknowns, one after another), each direction in
+/// which the equations (the columns of `J`, values `jn`) do not move, from `k` factorised with
+/// the columns `dropped` dropped: 1 on its dropped unknown, 0 on the others, the kept ones
+/// moving so that no equation changes, `K_kk v_k = -K_kd`. `t` is work space of one per row.
+fn free_directions(
+    k: &mut Gram,
+    columns: &Columns,
+    jn: &[f64],
+    dropped: &[usize],
+    free: &mut Vec<f64>,
+    t: &mut [f64],
+) {
+    let ncols = columns.len();
+    free.clear();
+    free.resize(dropped.len() * ncols, 0.0);
+    for (f, &d) in dropped.iter().enumerate() {
+        t.fill(0.0);
+        for &(row, idx) in columns.col(d) {
+            t[row as usize] += jn[idx as usize];
         }
-        k.solve_many(free, dropped.len());
-        for (f, v) in free.chunks_mut(ncols).enumerate() {
-            for &d in dropped {
-                v[d] = 0.0;
+        let v = &mut free[f * ncols..(f + 1) * ncols];
+        for (c, col) in columns.iter().enumerate() {
+            let mut acc = 0.0;
+            for &(row, idx) in col {
+                acc -= jn[idx as usize] * t[row as usize];
             }
-            v[dropped[f]] = 1.0;
+            v[c] = acc;
         }
     }
+    k.solve_many(free, dropped.len());
+    for (f, v) in free.chunks_mut(ncols).enumerate() {
+        for &d in dropped {
+            v[d] = 0.0;
+        }
+        v[dropped[f]] = 1.0;
+    }
+}
 
+/// Whether every direction in `dirs` (vectors of the unknowns, one after another) is free in
+/// `J` itself, `‖J v‖² <= eps ‖v‖²`, where rounding is not squared as in `K`. `t` is work
+/// space of one per row.
+fn all_free(columns: &Columns, jn: &[f64], dirs: &[f64], eps: f64, t: &mut [f64]) -> bool {
+    dirs.chunks(columns.len().max(1)).all(|v| {
+        t.fill(0.0);
+        for (c, col) in columns.iter().enumerate() {
+            for &(row, idx) in col {
+                t[row as usize] += jn[idx as usize] * v[c];
+            }
+        }
+        let jv: f64 = t.iter().map(|a| a * a).sum();
+        let vv: f64 = v.iter().map(|a| a * a).sum();
+        jv <= eps * vv
+    })
+}
+
+/// The number of directions in which the equations (`nrows` rows, the columns of `J` with
+/// values `jn`) do not move the unknowns, read from `k = Jᵀ J` (its structure from
+/// [`Gram::of_unknowns`]) as [`confirmed_free`] reads it. `None` when one is not confirmed, or
+/// when there are more than [`MAX_FREE`] (a mechanism, whose freedoms `J Jᵀ` counts well).
+pub(crate) fn free_count(
+    k: &mut Gram,
+    nrows: usize,
+    columns: &Columns,
+    jn: &[f64],
+    eps: f64,
+) -> Option<usize> {
+    k.assemble(jn);
+    if !k.factor(0.0, eps * SUSPECT) {
+        return None;
+    }
+    confirmed_free(k, nrows, columns, jn, eps).map(|f| f.len())
+}
+
+/// The columns `k = Jᵀ J`, factorised at [`SUSPECT`] times the rank tolerance `eps`, dropped:
+/// each a free direction of the unknowns, confirmed in `J` itself, where rounding is not
+/// squared (a free direction's pivot carries the rounding of every elimination before it, and
+/// can land above `eps`). `None` when one is not confirmed, or there are more than
+/// [`MAX_FREE`].
+fn confirmed_free(
+    k: &mut Gram,
+    nrows: usize,
+    columns: &Columns,
+    jn: &[f64],
+    eps: f64,
+) -> Option<Vec<usize>> {
+    let free = k.dropped();
+    if free.len() > MAX_FREE {
+        return None;
+    }
+    if !free.is_empty() {
+        let (mut dirs, mut t) = (Vec::new(), vec![0.0; nrows]);
+        free_directions(k, columns, jn, &free, &mut dirs, &mut t);
+        if !all_free(columns, jn, &dirs, eps, &mut t) {
+            return None;
+        }
+    }
+    Some(free)
+}
+
+impl Component {
     /// At a solution with Jacobian `jn` and residuals `r`, reached in `steps`: the rank and
     /// the rows on circuits from `K`, or only the solution when too few rows depend on others
     /// (see [`Component::solve_by_unknowns`]). With `current`, `k` is already factorised at
@@ -294,8 +355,7 @@ impl Component {
             return Reached::Solution(steps);
         }
         // As `rank::reveal` reads `J Jᵀ`: the columns dropped at a tolerance wider than the
-        // rank tolerance are candidates, each confirmed by measuring its free direction `v`
-        // in `J` itself, `‖J v‖² <= eps ‖v‖²`, where rounding is not squared. Where one is not
+        // rank tolerance are candidates, each confirmed in `J` itself. Where one is not
         // confirmed, `J Jᵀ` decides.
         let eps = cfg.rank_tolerance;
         if !current {
@@ -304,27 +364,9 @@ impl Component {
                 return Reached::Solution(steps);
             }
         }
-        let free = k.dropped();
-        if free.len() > MAX_FREE {
+        let Some(free) = confirmed_free(k, m, &self.columns, jn, eps) else {
             return Reached::Solution(steps);
-        }
-        if !free.is_empty() {
-            let (mut dirs, mut t) = (Vec::new(), vec![0.0; m]);
-            self.free_directions(k, jn, &free, &mut dirs, &mut t);
-            for v in dirs.chunks(ncols) {
-                t.fill(0.0);
-                for (c, col) in self.columns.iter().enumerate() {
-                    for &(row, idx) in col {
-                        t[row as usize] += jn[idx as usize] * v[c];
-                    }
-                }
-                let jv: f64 = t.iter().map(|a| a * a).sum();
-                let vv: f64 = v.iter().map(|a| a * a).sum();
-                if !(jv <= eps * vv) {
-                    return Reached::Solution(steps);
-                }
-            }
-        }
+        };
         let dependent = m - (ncols - free.len());
         if dependent <= DEPENDENCY_BLOCK {
             return Reached::Solution(steps);
