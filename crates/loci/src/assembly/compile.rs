@@ -4,27 +4,35 @@
 use super::angle::normalise_degrees;
 use super::component::{Component, Pose, Reference, Shape};
 use super::error::AssemblyError;
-use super::mate::{Mate, MateKind, Selection};
+use super::mate::{Mate, MateKind, Persistent, Selection};
 use super::math::{self, V3};
 use super::prim::{Body, Prim, D, L, P};
 use rustc_hash::FxHashMap as HashMap;
 
 /// A selection resolved to its body and reference.
 #[derive(Clone, Debug)]
-pub(crate) struct Resolved {
+pub(crate) struct Resolved<'a> {
     pub body: Body,
     pub reference: Reference,
-    pub label: String,
+    /// What was selected, named in errors only (formatted when one is made).
+    pub sel: &'a Selection,
+}
+
+impl Resolved<'_> {
+    /// The selection as a user wrote it: `component.reference`.
+    fn label(&self) -> String {
+        self.sel.to_string()
+    }
 }
 
 /// Finds what `sel` names.
-pub(crate) fn resolve(
+pub(crate) fn resolve<'a>(
     components: &[Component],
     index: &HashMap<&str, usize>,
     world: &[(String, Reference)],
     mate: &str,
-    sel: &Selection,
-) -> Result<Resolved, AssemblyError> {
+    sel: &'a Selection,
+) -> Result<Resolved<'a>, AssemblyError> {
     let missing = |c: &str| AssemblyError::UnknownReference {
         mate: mate.into(),
         component: c.into(),
@@ -44,7 +52,7 @@ pub(crate) fn resolve(
             Ok(Resolved {
                 body: Some(i),
                 reference: r.clone(),
-                label: sel.to_string(),
+                sel,
             })
         }
         None => {
@@ -56,7 +64,7 @@ pub(crate) fn resolve(
             Ok(Resolved {
                 body: None,
                 reference: r,
-                label: sel.to_string(),
+                sel,
             })
         }
     }
@@ -70,7 +78,7 @@ impl Ctx<'_> {
     fn unusable(&self, r: &Resolved, needed: &'static str) -> AssemblyError {
         AssemblyError::Unusable {
             mate: self.mate.into(),
-            selection: r.label.clone(),
+            selection: r.label(),
             found: r.reference.kind_name(),
             needed,
         }
@@ -140,11 +148,11 @@ fn check_bodies(mate: &str, a: &Resolved, b: &Resolved) -> Result<(), AssemblyEr
     match (a.body, b.body) {
         (None, None) => Err(AssemblyError::NotAttached {
             mate: mate.into(),
-            selection: b.label.clone(),
+            selection: b.label(),
         }),
         (Some(x), Some(y)) if x == y => Err(AssemblyError::SameComponent {
             mate: mate.into(),
-            component: a.label.split('.').next().unwrap_or_default().into(),
+            component: a.label().split('.').next().unwrap_or_default().into(),
         }),
         _ => Ok(()),
     }
@@ -165,25 +173,36 @@ pub(crate) fn compile(
     mate: &mut Mate,
     hints: &HashMap<(Body, Body), Vec<(D, D)>>,
 ) -> Result<Vec<Prim>, AssemblyError> {
-    let id = mate.id.clone();
-    let cx = Ctx { mate: &id };
-    let ra = resolve(components, index, world, &id, &mate.a)?;
-    let rb = resolve(components, index, world, &id, &mate.b)?;
+    // Its parts apart: the selections stay borrowed by what they resolve to while the
+    // persistent data is written.
+    let Mate {
+        id,
+        kind,
+        a,
+        b,
+        flip,
+        persistent,
+        ..
+    } = mate;
+    let id: &str = id;
+    let cx = Ctx { mate: id };
+    let ra = resolve(components, index, world, id, a)?;
+    let rb = resolve(components, index, world, id, b)?;
     let pose = |b: Body| b.map_or(Pose::IDENTITY, |i| poses[i]);
-    if let MateKind::Angle { degrees } = mate.kind {
+    if let MateKind::Angle { degrees } = *kind {
         // The seed's order: a direction from each, then both on components, then two of them.
         let (da, db) = (cx.dir(&ra)?, cx.dir(&rb)?);
         for r in [&ra, &rb] {
             if r.body.is_none() {
                 return Err(AssemblyError::NotAttached {
-                    mate: id.clone(),
-                    selection: r.label.clone(),
+                    mate: id.into(),
+                    selection: r.label(),
                 });
             }
         }
-        check_bodies(&id, &ra, &rb)?;
+        check_bodies(id, &ra, &rb)?;
         let target = normalise_degrees(cx.value(degrees, false)?).to_radians();
-        let axis = match mate.persistent.axis {
+        let axis = match persistent.axis {
             Some(a) => a,
             None => {
                 let (wa, wb) = (pose(da.body).direction(da.d), pose(db.body).direction(db.d));
@@ -221,7 +240,7 @@ pub(crate) fn compile(
                         pose(da.body).to_local_direction(n)
                     }
                 };
-                mate.persistent.axis = Some(local);
+                persistent.axis = Some(local);
                 local
             }
         };
@@ -232,11 +251,11 @@ pub(crate) fn compile(
             target,
         }]);
     }
-    check_bodies(&id, &ra, &rb)?;
+    check_bodies(id, &ra, &rb)?;
     let (sa, sb) = (ra.reference.shape(), rb.reference.shape());
-    let flip = mate.flip;
+    let flip = *flip;
     use Shape::*;
-    let prims = match mate.kind.clone() {
+    let prims = match kind.clone() {
         MateKind::Angle { .. } => unreachable!("handled above"),
         MateKind::Coincident => match (sa, sb) {
             (Point, Point) => vec![Prim::Coincident(cx.point(&ra), cx.point(&rb))],
@@ -310,7 +329,7 @@ pub(crate) fn compile(
         MateKind::Concentric | MateKind::Cylindrical => collinear(&cx, &ra, &rb, flip)?,
         MateKind::Fixed | MateKind::Fastened => {
             let (pa, pb) = (pose(ra.body), pose(rb.body));
-            let (t, q) = *mate.persistent.relative.get_or_insert_with(|| {
+            let (t, q) = *persistent.relative.get_or_insert_with(|| {
                 (
                     pa.to_local_point(pb.translation),
                     math::qmul(math::qconj(pa.rotation), pb.rotation),
@@ -332,7 +351,7 @@ pub(crate) fn compile(
         }
         MateKind::Revolute => {
             let (la, lb) = (cx.line(&ra)?, cx.line(&rb)?);
-            capture_zero(mate, &la, &lb, poses);
+            capture_zero(kind, persistent, &la, &lb, poses);
             vec![
                 Prim::Coincident(la.point(), lb.point()),
                 Prim::Parallel(la.dir(), lb.dir(), flip),
@@ -340,7 +359,7 @@ pub(crate) fn compile(
         }
         MateKind::Slider => {
             let (la, lb) = (cx.line(&ra)?, cx.line(&rb)?);
-            let (ua, ub) = capture_zero(mate, &la, &lb, poses);
+            let (ua, ub) = capture_zero(kind, persistent, &la, &lb, poses);
             vec![
                 Prim::Parallel(la.dir(), lb.dir(), flip),
                 Prim::OnLine(lb.point(), la),
@@ -360,7 +379,7 @@ pub(crate) fn compile(
         MateKind::Planar => planes(&cx, &ra, &rb, flip, None)?,
         MateKind::PinSlot => {
             let (slot, pin) = (cx.line(&ra)?, cx.line(&rb)?);
-            let n = *mate.persistent.axis.get_or_insert_with(|| {
+            let n = *persistent.axis.get_or_insert_with(|| {
                 let pa = pose(slot.body);
                 let dp = pa.to_local_direction(pose(pin.body).direction(pin.d));
                 let off = math::sub(dp, math::scale(slot.d, math::dot(dp, slot.d)));
@@ -425,27 +444,29 @@ fn line_in_plane(cx: &Ctx, rl: &Resolved, rp: &Resolved) -> Result<Vec<Prim>, As
 /// A joint's zero: a direction normal to A's axis in A's frame, and one normal to B's in B's
 /// frame. For a slider, B's is A's world direction when the joint is first solved, so that
 /// the slider holds the parts' turn about the axis as it finds it.
-fn capture_zero(mate: &mut Mate, la: &L, lb: &L, poses: &[Pose]) -> (V3, V3) {
+fn capture_zero(
+    kind: &MateKind,
+    persistent: &mut Persistent,
+    la: &L,
+    lb: &L,
+    poses: &[Pose],
+) -> (V3, V3) {
     let pose = |b: Body| b.map_or(Pose::IDENTITY, |i| poses[i]);
-    if mate.kind == MateKind::Revolute {
+    if *kind == MateKind::Revolute {
         // A revolute's angle is zero where the two references' frames agree: the same
         // perpendicular of each axis, in each component's own frame.
-        let ua = *mate
-            .persistent
+        let ua = *persistent
             .axis
             .get_or_insert_with(|| math::perpendicular(la.d));
-        let ub = *mate
-            .persistent
+        let ub = *persistent
             .axis_b
             .get_or_insert_with(|| math::perpendicular(lb.d));
         return (ua, ub);
     }
-    let ua = *mate
-        .persistent
+    let ua = *persistent
         .axis
         .get_or_insert_with(|| math::perpendicular(la.d));
-    let ub = *mate
-        .persistent
+    let ub = *persistent
         .axis_b
         .get_or_insert_with(|| pose(lb.body).to_local_direction(pose(la.body).direction(ua)));
     (ua, ub)
