@@ -216,7 +216,7 @@ pub(crate) fn name_conflicts(
     let sets_in = |eqs: &Equations| -> Vec<ConflictSet> {
         let lin = eqs.linearise(values);
         let circuits = match Rank::new(eqs, &lin, cfg) {
-            Some(mut r) => circuits::circuits(eqs, &lin, &mut r, cfg),
+            Some(mut r) => circuits::conflicting_circuits(eqs, &lin, &mut r, cfg),
             None => return Vec::new(),
         };
         conflict_sets(

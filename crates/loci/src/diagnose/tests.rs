@@ -190,3 +190,90 @@ fn motions_are_named() {
     assert_eq!(d.dof, 1 + 3 + 1 + 1 + 2 + 3);
     assert_eq!(d.outcome, Outcome::Okay);
 }
+
+/// An `n x n` lattice of points in group 2 (the first one in group 1, pinned), each cell
+/// split by the same diagonal, a distance on every edge at its drawn length; the first cell's
+/// other diagonal is given a length one longer than it is, which cannot hold.
+fn impossible_mesh(n: usize) -> System {
+    let mut s = System::new();
+    plane(&mut s);
+    let at = |i: usize, j: usize| 1000 + (j * n + i) as u32;
+    let xy = |i: usize, j: usize| {
+        // A lattice bent a little, so that no two edges are parallel.
+        let (x, y) = (i as f64, j as f64);
+        (10.0 * x + 0.3 * (y * y), 10.0 * y + 0.2 * (x * x))
+    };
+    for j in 0..n {
+        for i in 0..n {
+            let (x, y) = xy(i, j);
+            let p = 2 * at(i, j);
+            let g = if (i, j) == (0, 0) { 1 } else { 2 };
+            s.add_param(Param::new(p, g, x)).unwrap();
+            s.add_param(Param::new(p + 1, g, y)).unwrap();
+            s.add_entity(Entity::point_2d(at(i, j), g, 200, [p, p + 1]))
+                .unwrap();
+        }
+    }
+    let mut h = 1;
+    let mut distance = |s: &mut System, a: (usize, usize), b: (usize, usize), extra: f64| {
+        let (pa, pb) = (xy(a.0, a.1), xy(b.0, b.1));
+        let d = ((pa.0 - pb.0).powi(2) + (pa.1 - pb.1).powi(2)).sqrt() + extra;
+        s.add_constraint(
+            Constraint::new(h, 2, K::PtPtDistance)
+                .in_workplane(Some(200))
+                .with_points(at(a.0, a.1), at(b.0, b.1))
+                .with_val(d),
+        )
+        .unwrap();
+        h += 1;
+    };
+    for j in 0..n {
+        for i in 0..n {
+            if i + 1 < n {
+                distance(&mut s, (i, j), (i + 1, j), 0.0);
+            }
+            if j + 1 < n {
+                distance(&mut s, (i, j), (i, j + 1), 0.0);
+            }
+            if i + 1 < n && j + 1 < n {
+                distance(&mut s, (i, j), (i + 1, j + 1), 0.0);
+            }
+        }
+    }
+    distance(&mut s, (1, 0), (0, 1), 1.0);
+    s
+}
+
+#[test]
+fn the_screened_circuits_are_the_conflicting_ones_of_all_circuits() {
+    let sys = impossible_mesh(30);
+    let cfg = Config::default();
+    let (report, values) =
+        crate::solve::solve_core(&sys, 2.into(), &[], &cfg.clone().with_find_failed(false))
+            .unwrap();
+    assert_ne!(report.outcome, Outcome::Okay);
+    let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
+    let eqs = Equations::new(&sys, 2.into(), &start).unwrap();
+    let lin = eqs.linearise(&values);
+    let mut all = Rank::new(&eqs, &lin, &cfg).unwrap();
+    let mut screened = Rank::new(&eqs, &lin, &cfg).unwrap();
+    // Enough dependent rows for the screen to run.
+    assert!(all.dropped.len() > 2 * 32, "{} dropped", all.dropped.len());
+    let every = circuits::circuits(&eqs, &lin, &mut all, &cfg);
+    let some = circuits::conflicting_circuits(&eqs, &lin, &mut screened, &cfg);
+    let conflicting = |c: &[Circuit]| -> Vec<Vec<usize>> {
+        c.iter()
+            .filter(|c| c.conflicting)
+            .map(|c| c.rows.clone())
+            .collect()
+    };
+    assert!(!conflicting(&every).is_empty());
+    assert_eq!(conflicting(&some), conflicting(&every));
+    assert!(
+        some.len() < every.len(),
+        "{} of {} computed, {} conflicting",
+        some.len(),
+        every.len(),
+        conflicting(&every).len()
+    );
+}
