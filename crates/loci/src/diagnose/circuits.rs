@@ -70,7 +70,7 @@ const COEFF_EPS: f64 = 1e-6;
 /// Dropped rows whose circuits are solved for together: the factor is read once for them all
 /// (a 20x20 mesh drops about 400 rows, each a solve with a factor of tens of thousands of
 /// entries).
-const BATCH: usize = 32;
+pub(crate) const BATCH: usize = 32;
 
 /// The fundamental circuit of every dropped row, classified as conflicting or redundant.
 pub(crate) fn circuits(
@@ -83,9 +83,9 @@ pub(crate) fn circuits(
     circuits_of(eqs, lin, rank, cfg, &rows)
 }
 
-/// The conflicting circuits of [`circuits`], and only some of the others: where many rows
-/// are dropped, those whose circuits cannot conflict are found first, all at once, and their
-/// circuits are not computed.
+/// The dropped rows whose circuits may conflict, those whose own residuals are largest first
+/// (an impossible constraint's, and those of its neighbours, whose circuits are the
+/// smallest conflicts), then by row; where few rows are dropped, all of them in order.
 ///
 /// A dropped row `k`'s circuit conflicts when `yᵀ rn`, `y = e_k - c` with `G c = Jn Jn_kᵀ`, is
 /// beyond the tolerance it allows, which is at least `tolerance / ‖J_k‖`. `cᵀ rn = Jn_k Jnᵀ z`
@@ -93,16 +93,16 @@ pub(crate) fn circuits(
 /// against `Jn`, as the circuits are) measures every dropped row; the rows within half that
 /// least tolerance are left out. At the least-squares point of a 75x75 mesh with one
 /// impossible diagonal, 509 of its 5,330 dropped rows conflict, and the circuits took four
-/// fifths of the time to name its six constraints; 3,385 are left to compute (the others'
-/// tolerance also grows with their coefficients, which are not known before).
-pub(crate) fn conflicting_circuits(
+/// fifths of the time to name its six constraints; 3,385 are left (the others' tolerance
+/// also grows with their coefficients, which are not known before).
+pub(crate) fn may_conflict(
     eqs: &Equations,
     lin: &Linear,
     rank: &mut Rank,
     cfg: &Config,
-) -> Vec<Circuit> {
+) -> Vec<usize> {
     if rank.dropped.len() <= SCREEN_FROM {
-        return circuits(eqs, lin, rank, cfg);
+        return rank.dropped.clone();
     }
     let (m, n) = (eqs.rows, eqs.columns.len());
     let rn: Vec<f64> = (0..m).map(|i| lin.rn(i)).collect();
@@ -125,30 +125,31 @@ pub(crate) fn conflicting_circuits(
     rank.gram.solve(&mut res);
     z.iter_mut().zip(&res).for_each(|(a, d)| *a += d);
     eqs.mul_t(lin, &z, &mut w);
-    let rows: Vec<usize> = rank
+    let mut rows: Vec<(f64, usize)> = rank
         .dropped
         .iter()
-        .copied()
-        .filter(|&k| {
+        .filter_map(|&k| {
             if lin.inv[k] == 0.0 {
-                return true;
+                return Some((f64::INFINITY, k));
             }
             let c_rn: f64 = eqs
                 .row_entries(k)
                 .map(|(c, ik)| lin.jn[ik as usize] * w[c as usize])
                 .sum();
-            !((rn[k] - c_rn).abs() <= 0.5 * cfg.tolerance * lin.inv[k])
+            let ratio = (rn[k] - c_rn).abs() / (cfg.tolerance * lin.inv[k]);
+            (!(ratio <= 0.5)).then_some((rn[k].abs(), k))
         })
         .collect();
-    circuits_of(eqs, lin, rank, cfg, &rows)
+    rows.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    rows.into_iter().map(|(_, k)| k).collect()
 }
 
-/// Dropped rows up to which [`conflicting_circuits`] computes every circuit: a few batches,
-/// as cheap as finding which need computing.
+/// Dropped rows up to which [`may_conflict`] keeps every row: a few batches of circuits, as
+/// cheap as finding which need computing.
 const SCREEN_FROM: usize = 2 * BATCH;
 
 /// The fundamental circuits of the dropped rows `rows` (of `rank`'s), classified.
-fn circuits_of(
+pub(crate) fn circuits_of(
     eqs: &Equations,
     lin: &Linear,
     rank: &mut Rank,

@@ -304,6 +304,22 @@ pub(crate) fn holds(eqs: &Equations, set: &[Member], starts: &[&[f64]], cfg: &Co
     kernels.is_some_and(|k| k.is_empty() || consistent(eqs, &k, starts, cfg))
 }
 
+/// Whether every equation of the group but those of the members `without` holds, from one of
+/// `starts` on SolveSpace's budget for a whole sketch and without building it up: a quick
+/// check that no other conflict is left once those are named. `false` says nothing (a solve
+/// that needed more steps).
+pub(crate) fn all_but_hold(
+    eqs: &Equations,
+    without: &[Member],
+    starts: &[&[f64]],
+    cfg: &Config,
+) -> bool {
+    let kernels: Vec<usize> = (0..eqs.kernels.len())
+        .filter(|&k| !without.contains(&eqs.member(k)))
+        .collect();
+    kernels.is_empty() || check(eqs, &kernels, starts, cfg, true, false)
+}
+
 /// Whether `set` fails as a whole, without shrinking it: one check, for sets too large for the
 /// deletion filter's one solve per member.
 pub(crate) fn fails(eqs: &Equations, set: &[Member], starts: &[&[f64]], cfg: &Config) -> bool {

@@ -260,12 +260,16 @@ fn the_screened_circuits_are_the_conflicting_ones_of_all_circuits() {
     // Enough dependent rows for the screen to run.
     assert!(all.dropped.len() > 2 * 32, "{} dropped", all.dropped.len());
     let every = circuits::circuits(&eqs, &lin, &mut all, &cfg);
-    let some = circuits::conflicting_circuits(&eqs, &lin, &mut screened, &cfg);
+    let rows = circuits::may_conflict(&eqs, &lin, &mut screened, &cfg);
+    let some = circuits::circuits_of(&eqs, &lin, &mut screened, &cfg, &rows);
     let conflicting = |c: &[Circuit]| -> Vec<Vec<usize>> {
-        c.iter()
+        let mut out: Vec<Vec<usize>> = c
+            .iter()
             .filter(|c| c.conflicting)
             .map(|c| c.rows.clone())
-            .collect()
+            .collect();
+        out.sort();
+        out
     };
     assert!(!conflicting(&every).is_empty());
     assert_eq!(conflicting(&some), conflicting(&every));
