@@ -1104,6 +1104,8 @@ impl Component {
             too_large: false,
         };
         self.gram = gram_slot;
+        // `K`'s structure, shared with the steps through it, counts the free directions
+        // where the solve stopped short (`solve_by_unknowns` builds it for the same components).
         if !converged && factored && rank::counts_by_unknowns(m, ncols) && self.unknowns.is_none() {
             self.unknowns = Some(Gram::of_unknowns(m, &self.columns));
         }
@@ -1114,10 +1116,7 @@ impl Component {
             fin.dropped = if converged {
                 rank::reveal(gram, &self.columns, jn, cfg.rank_tolerance)
             } else {
-                let k = match &mut self.unknowns {
-                    Some(Some(k)) if rank::counts_by_unknowns(m, ncols) => Some(k),
-                    _ => None,
-                };
+                let k = self.unknowns.as_mut().and_then(Option::as_mut);
                 rank::short_of_solution(gram, k, &self.columns, jn, cfg.rank_tolerance)
             };
             if cfg.find_failed {
