@@ -33,11 +33,24 @@ fn named(sys: &System, m: &Member) -> String {
 }
 
 fn list(sys: &System, ms: &[Member]) -> String {
-    ms.iter()
+    let mut out = ms
+        .iter()
+        .take(LIST_MAX)
         .map(|m| named(sys, m))
         .collect::<Vec<_>>()
-        .join(", ")
+        .join(", ");
+    if ms.len() > LIST_MAX {
+        let _ = write!(
+            out,
+            ", ... and {} more (--json lists them all)",
+            ms.len() - LIST_MAX
+        );
+    }
+    out
 }
+
+/// The most members a list names on one line: a block of a large mesh has thousands.
+const LIST_MAX: usize = 24;
 
 /// Renders a diagnosis; `all` lists fixed entities as well.
 pub(crate) fn render(name: &str, sys: &System, d: &Diagnosis, all: bool) -> String {

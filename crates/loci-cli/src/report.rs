@@ -41,16 +41,27 @@ pub(crate) fn render(
         let _ = writeln!(s, "  {label:<12} none");
     } else {
         let _ = writeln!(s, "  {label}:");
-        for h in &rep.failed {
+        let constraints = rep.failed.iter().map(|h| {
             let kind = after.constraint(*h).map(|c| c.kind.name()).unwrap_or("?");
-            let _ = writeln!(s, "    {h} ({kind})");
-        }
-        for h in &rep.failed_entities {
+            format!("{h} ({kind})")
+        });
+        let entities = rep.failed_entities.iter().map(|h| {
             let kind = after
                 .entity(*h)
                 .map(|e| e.entity_type().name())
                 .unwrap_or("?");
-            let _ = writeln!(s, "    {h} ({kind}, implicit condition)");
+            format!("{h} ({kind}, implicit condition)")
+        });
+        let total = rep.failed.len() + rep.failed_entities.len();
+        for line in constraints.chain(entities).take(LINES_MAX) {
+            let _ = writeln!(s, "    {line}");
+        }
+        if total > LINES_MAX {
+            let _ = writeln!(
+                s,
+                "    ... and {} more (--json lists them all)",
+                total - LINES_MAX
+            );
         }
     }
     let moved: Vec<_> = before
@@ -63,7 +74,7 @@ pub(crate) fn render(
         let _ = writeln!(s, "  moved        none");
     } else {
         let _ = writeln!(s, "  moved parameters ({}):", moved.len());
-        for (b, a) in moved.iter().take(40) {
+        for (b, a) in moved.iter().take(LINES_MAX) {
             let _ = writeln!(
                 s,
                 "    {:<12} {:>14.6} -> {:>14.6}",
@@ -72,9 +83,13 @@ pub(crate) fn render(
                 a.val
             );
         }
-        if moved.len() > 40 {
-            let _ = writeln!(s, "    ... and {} more", moved.len() - 40);
+        if moved.len() > LINES_MAX {
+            let _ = writeln!(s, "    ... and {} more", moved.len() - LINES_MAX);
         }
     }
     s
 }
+
+/// The most constraints, or moved parameters, a report lists one per line: an impossible
+/// dimension in a large mesh or a redundant one names thousands (`--json` lists them all).
+const LINES_MAX: usize = 40;

@@ -400,3 +400,50 @@ fn every_bad_input_exits_3_with_one_line() {
     let err = bad_input(&["solve", "no-such-file.slvs"]);
     assert!(err.starts_with("cannot read no-such-file.slvs"), "{err}");
 }
+
+#[test]
+fn long_lists_are_cut_short_in_the_text_reports_and_whole_in_json() {
+    // The triangle with its first length written 60 more times: 61 redundant copies.
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/triangle.json");
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(src).unwrap()).unwrap();
+    let cons = v["constraints"].as_array_mut().unwrap();
+    let length = cons
+        .iter()
+        .find(|c| c["type"] == "pt_pt_distance")
+        .unwrap()
+        .clone();
+    for h in 1000..1060 {
+        let mut copy = length.clone();
+        copy["h"] = h.into();
+        cons.push(copy);
+    }
+    let file = scratch("sixty_copies.json");
+    std::fs::write(&file, v.to_string()).unwrap();
+    let path = file.to_str().unwrap();
+
+    let text = String::from_utf8(loci(&["solve", path]).stdout).unwrap();
+    let listed = text
+        .lines()
+        .filter(|l| l.contains("(pt_pt_distance)"))
+        .count();
+    assert_eq!(listed, 40, "{text}");
+    assert!(
+        text.contains("    ... and 21 more (--json lists them all)"),
+        "{text}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_slice(&loci(&["solve", path, "--json"]).stdout).unwrap();
+    assert_eq!(json["failed"].as_array().unwrap().len(), 61, "{json}");
+
+    let check = String::from_utf8(loci(&["check", path]).stdout).unwrap();
+    let line = check
+        .lines()
+        .find(|l| l.contains("are redundant") || l.contains("is redundant"))
+        .unwrap_or_else(|| panic!("{check}"));
+    assert_eq!(line.matches("(pt_pt_distance)").count(), 24, "{line}");
+    assert!(
+        line.contains(", ... and 37 more (--json lists them all)"),
+        "{line}"
+    );
+}
