@@ -415,12 +415,9 @@ fn conflict_sets(
     // The candidate less the constraints every conflict shown so far shares (of the first
     // one's), when it has any of them.
     let rest_of = |c: &[Member], out: &[ConflictSet]| -> Option<Vec<Member>> {
-        let first = out.first()?;
-        let shared: Vec<Member> = first
-            .members
-            .iter()
-            .filter(|m| c.contains(m) && out.iter().all(|o| o.members.contains(m)))
-            .copied()
+        let shared: Vec<Member> = shared_members(out)?
+            .into_iter()
+            .filter(|m| c.contains(m))
             .collect();
         (!shared.is_empty()).then(|| c.iter().filter(|m| !shared.contains(m)).copied().collect())
     };
