@@ -490,7 +490,9 @@ fn wasm(args: &[String]) -> Result<()> {
     };
     let mut chain = vec![10, 30, 100, 300, 1_000, 3_000, 10_000];
     let mut grid = vec![3, 5, 10, 17, 32, 50, 100];
-    let mut reps = 11;
+    // Up to 2 s of builds and solves per size and solver: small problems take a thousand
+    // repetitions rather than 11.
+    let mut reps = 1001;
     let mut limit = 60.0;
     let mut it = args.iter();
     while let Some(a) = it.next() {
