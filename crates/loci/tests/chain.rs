@@ -102,3 +102,40 @@ fn a_solver_keeps_up_with_changed_angles() {
     let worst = worst_residual(&ch, &sys);
     assert!(worst < 1e-9, "largest residual {worst:e}");
 }
+
+#[test]
+fn a_free_chain_ends_on_the_step_that_converged_quadratically() {
+    // Without its horizontal, the chain turns freely about its first joint and its steps slide
+    // towards the solution nearest the drawing. From this start they shrink from 3e-2 to 3e-4
+    // to 6e-8: the solve ends on the third, as the next would be about 1e-11, rather than
+    // take a fourth Jacobian and factorisation to see it (`QUADRATIC` in `solve/newton.rs`).
+    let mut ch = chain(10, 2, 0.3);
+    let mut sys = std::mem::take(&mut ch.system);
+    let horizontal: Vec<_> = sys
+        .constraints()
+        .iter()
+        .filter(|c| c.kind == loci::ConstraintKind::Horizontal)
+        .map(|c| c.h)
+        .collect();
+    assert_eq!(horizontal.len(), 1);
+    sys.remove_constraint(horizontal[0]);
+    let rep = sys.solve_group(ch.group).unwrap();
+    assert_eq!(rep.outcome, Outcome::Okay);
+    assert_eq!(rep.dof, 1);
+    assert_eq!(rep.iterations, 3, "{rep:?}");
+    let p = |h: u32| uv(&sys, h);
+    assert!(dist(p(ch.segments[0][0]), ch.joints[0]) < 1e-12);
+    for (i, &[a, b, _]) in ch.segments.iter().enumerate() {
+        assert!(
+            (dist(p(a), p(b)) - ch.lengths[i]).abs() < 1e-10,
+            "length {i}"
+        );
+        if let Some(&[a1, _, _]) = ch.segments.get(i + 1) {
+            assert!(dist(p(b), p(a1)) < 1e-12, "joint {i}");
+        }
+    }
+    // Where the last end was with the fourth step taken (measured when solves still took
+    // it): the step that ends the solve is no more than rounding away from it.
+    let [_, b, _] = ch.segments[9];
+    assert!(dist(p(b), [90.952_583_051_370_31, -26.922_391_432_971_29]) < 1e-9);
+}

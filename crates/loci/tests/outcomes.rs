@@ -601,3 +601,37 @@ fn an_angle_to_a_line_of_no_length_never_holds() {
         );
     }
 }
+
+/// A point held at distance 1 from two fixed points 2 apart: the one solution is their
+/// midpoint, where the two distances' rows become parallel.
+fn touching_circles(start: [f64; 2]) -> (Sketch, u32) {
+    let mut s = Sketch::new();
+    let a = s.point(301, 2, [0.0, 0.0]);
+    let b = s.point(302, 2, [2.0, 0.0]);
+    let p = s.point(303, 2, start);
+    s.on_points(2, K::WhereDragged, a, 0, 0.0);
+    s.on_points(2, K::WhereDragged, b, 0, 0.0);
+    s.on_points(2, K::PtPtDistance, p, a, 1.0);
+    s.on_points(2, K::PtPtDistance, p, b, 1.0);
+    (s, p)
+}
+
+#[test]
+fn rows_that_become_dependent_at_the_solution_are_approached_step_by_halving_step() {
+    // Newton converges only linearly onto such a solution, its steps halving, so the solve
+    // never ends as one converging quadratically does (on the step's own factorisation, read
+    // where the rows were still apart): it stops where both distances hold to within the
+    // tolerance, 9e-6 above the midpoint, and reads the rank there, the rows still apart by
+    // more than the rank tolerance (the same answer, bit for bit, as before that exit existed).
+    let (mut s, p) = touching_circles([1.0, 0.3]);
+    let rep = s.sys.solve_group(2).unwrap();
+    assert_eq!(rep.outcome, Outcome::Okay);
+    assert_eq!(rep.dof, 0);
+    assert!(rep.residual <= 1e-10, "{rep:?}");
+    assert!(rep.iterations >= 10, "halving steps: {rep:?}");
+    let q = s.uv(p);
+    assert!(
+        (q[0] - 1.0).abs() < 1e-12 && q[1] > 0.0 && q[1] < 2e-5,
+        "{q:?}"
+    );
+}
