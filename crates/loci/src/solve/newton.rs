@@ -1053,13 +1053,15 @@ impl Component {
             // to `PROJECTED` or less (`q / (1 - q)` times the last): the answer is then as near
             // the nearest solution as a step below `PROJECTED` would leave it (a 200x200 truss
             // slides at a rate of 0.03, 1.4e-6, 4.4e-8, 1.4e-9, and took a ninth iteration of
-            // 6e-11 to see it; a 10-segment chain at 2e-4 from 3e-4 to 6e-8).
+            // 6e-11 to see it; a 10-segment chain at 2e-4 from 3e-4 to 6e-8). Not after a
+            // shortened step, whose size says nothing of the rate.
             let quadratic = before.is_finite() && last_move <= QUADRATIC * before;
             let rate = last_move / before;
             settled = sliding
                 && (last_move <= PROJECTED
                     || (last_move <= SLIDE_NOISE && last_move >= 0.5 * before)
                     || (last_move <= SLIDE_NOISE
+                        && before.is_finite()
                         && rate < 0.5
                         && last_move * rate / (1.0 - rate) <= PROJECTED));
             // A full Newton step that lands within tolerance and moved the unknowns by next to
