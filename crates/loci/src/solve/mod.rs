@@ -23,6 +23,7 @@ mod report;
 #[cfg(test)]
 mod slide_tests;
 mod substitute;
+mod supernodal;
 #[cfg(test)]
 mod test_support;
 mod unknowns;
