@@ -67,58 +67,71 @@ pub(crate) fn work_len(symbolic: &SymbolicSupernodalCholesky<usize>) -> usize {
     symbolic.nnz_per_super().iter().copied().max().unwrap_or(0)
 }
 
-/// Solves `L D Lᵀ x = b` in place (`x` holds `b` on entry, in the factor's own order), with
-/// `work` at least [`work_len`] long.
+/// Solves `L D Lᵀ X = B` in place for the `k` columns of `B` (`x` holds them one after
+/// another, in the factor's own order), with `work` at least [`work_len`] long. Each supernode
+/// is applied to every column in turn, so that its block is read from memory once for all.
 pub(crate) fn solve(
     symbolic: &SymbolicSupernodalCholesky<usize>,
     values: &[f64],
     x: &mut [f64],
+    k: usize,
     work: &mut [f64],
 ) {
-    let n = symbolic.n_supernodes();
-    // L z = b: within the supernode, then its contribution to the rows below.
-    for s in 0..n {
+    let n = symbolic.nrows();
+    let count = symbolic.n_supernodes();
+    if n == 0 {
+        return;
+    }
+    // L Z = B: within the supernode, then its contribution to the rows below.
+    for s in 0..count {
         let sn = Supernode::of(symbolic, values, s);
         let (nr, nc, st) = (sn.nrows(), sn.ncols, sn.start);
-        let below = &mut work[..sn.pattern.len()];
-        below.fill(0.0);
-        for j in 0..nc {
-            let col = &sn.block[j * nr..(j + 1) * nr];
-            let xj = x[st + j];
-            for i in j + 1..nc {
-                x[st + i] -= col[i] * xj;
+        for x in x.chunks_mut(n).take(k) {
+            let below = &mut work[..sn.pattern.len()];
+            below.fill(0.0);
+            for j in 0..nc {
+                let col = &sn.block[j * nr..(j + 1) * nr];
+                let xj = x[st + j];
+                for i in j + 1..nc {
+                    x[st + i] -= col[i] * xj;
+                }
+                for (w, l) in below.iter_mut().zip(&col[nc..]) {
+                    *w += l * xj;
+                }
             }
-            for (w, l) in below.iter_mut().zip(&col[nc..]) {
-                *w += l * xj;
+            for (&i, w) in sn.pattern.iter().zip(below.iter()) {
+                x[i] -= w;
             }
-        }
-        for (&i, w) in sn.pattern.iter().zip(below.iter()) {
-            x[i] -= w;
         }
     }
-    // D w = z.
-    for s in 0..n {
+    // D W = Z.
+    for s in 0..count {
         let sn = Supernode::of(symbolic, values, s);
         let nr = sn.nrows();
         for j in 0..sn.ncols {
-            x[sn.start + j] *= sn.block[j * nr + j].recip();
+            let d = sn.block[j * nr + j].recip();
+            for x in x.chunks_mut(n).take(k) {
+                x[sn.start + j] *= d;
+            }
         }
     }
-    // Lᵀ x = w, from the last supernode back.
-    for s in (0..n).rev() {
+    // Lᵀ X = W, from the last supernode back.
+    for s in (0..count).rev() {
         let sn = Supernode::of(symbolic, values, s);
         let (nr, nc, st) = (sn.nrows(), sn.ncols, sn.start);
-        let below = &mut work[..sn.pattern.len()];
-        for (w, &i) in below.iter_mut().zip(sn.pattern) {
-            *w = x[i];
-        }
-        for j in (0..nc).rev() {
-            let col = &sn.block[j * nr..(j + 1) * nr];
-            let mut acc = x[st + j] - dot(&col[nc..], below);
-            for i in j + 1..nc {
-                acc -= col[i] * x[st + i];
+        for x in x.chunks_mut(n).take(k) {
+            let below = &mut work[..sn.pattern.len()];
+            for (w, &i) in below.iter_mut().zip(sn.pattern) {
+                *w = x[i];
             }
-            x[st + j] = acc;
+            for j in (0..nc).rev() {
+                let col = &sn.block[j * nr..(j + 1) * nr];
+                let mut acc = x[st + j] - dot(&col[nc..], below);
+                for i in j + 1..nc {
+                    acc -= col[i] * x[st + i];
+                }
+                x[st + j] = acc;
+            }
         }
     }
 }
