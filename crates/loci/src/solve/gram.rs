@@ -352,6 +352,29 @@ impl Gram {
         }
     }
 
+    /// A copy of the last factorisation, for [`Gram::restore_factor`] once another has been
+    /// made of the same `G` (`None` where factorising again costs little: an envelope).
+    pub fn save_factor(&self) -> Option<Vec<f64>> {
+        match self {
+            Gram::Banded(_) => None,
+            Gram::Sparse(s) => Some(s.l_values.clone()),
+        }
+    }
+
+    /// Makes the factorisation of `G` with the tolerance `eps` current again, from `saved`
+    /// (as [`Gram::save_factor`] kept it, with that tolerance) or by factorising afresh: the
+    /// same values either way, as a factorisation of the same `G` is the same every time.
+    pub fn restore_factor(&mut self, saved: Option<Vec<f64>>, eps: f64) {
+        match (self, saved) {
+            (Gram::Sparse(s), Some(values)) if values.len() == s.l_values.len() => {
+                s.l_values = values;
+            }
+            (gram, _) => {
+                gram.factor(0.0, eps);
+            }
+        }
+    }
+
     /// Solves `G y = rhs` in place with the last factorisation.
     pub fn solve(&mut self, rhs: &mut [f64]) {
         match self {

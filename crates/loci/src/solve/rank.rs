@@ -28,8 +28,10 @@ pub(crate) fn reveal(gram: &mut Gram, columns: &Columns, jn: &[f64], eps: f64) -
     if !(gram.smallest_kept_pivot() <= wide) {
         return base;
     }
+    // The factorisation with `eps`, kept for when the wider one does not stand.
+    let saved = gram.save_factor();
     if !gram.factor(0.0, wide) {
-        gram.factor(0.0, eps);
+        gram.restore_factor(saved, eps);
         return base;
     }
     let widened = gram.dropped();
@@ -41,34 +43,51 @@ pub(crate) fn reveal(gram: &mut Gram, columns: &Columns, jn: &[f64], eps: f64) -
         .collect();
     let entries = row_entries(columns, &suspects, m);
     let mut confirmed = Vec::with_capacity(suspects.len());
+    // The block's solutions row by row (`c_t[i]` at `i * k + t`), and `J_kᵀ - Jᵀ c` in one
+    // column for all of them: `J` is read once per block.
+    let mut by_row = Vec::new();
     for (block, ks) in suspects.chunks(DEPENDENCY_BLOCK).enumerate() {
-        let mut b = vec![0.0; m * ks.len()];
+        let k = ks.len();
+        let mut b = vec![0.0; m * k];
         for (t, rhs) in b.chunks_mut(m.max(1)).enumerate() {
             gram_column(columns, jn, &entries[block * DEPENDENCY_BLOCK + t], rhs);
         }
-        gram.solve_many(&mut b, ks.len());
-        for (&k, c) in ks.iter().zip(b.chunks_mut(m.max(1))) {
-            c[k] = -1.0;
-            // J_kᵀ - Jᵀ c, column by column, with c_k = -1 standing for row k itself.
-            let dist2: f64 = (0..columns.len())
-                .map(|col| {
-                    let s: f64 = columns
-                        .col(col)
-                        .iter()
-                        .map(|&(row, idx)| c[row as usize] * jn[idx as usize])
-                        .sum();
-                    s * s
-                })
-                .sum();
-            if dist2 <= eps {
-                confirmed.push(k);
+        gram.solve_many(&mut b, k);
+        by_row.clear();
+        by_row.resize(m * k, 0.0);
+        for (t, (&row, c)) in ks.iter().zip(b.chunks(m.max(1))).enumerate() {
+            for (i, v) in c.iter().enumerate() {
+                by_row[i * k + t] = *v;
+            }
+            // c_k = -1 stands for row k itself.
+            by_row[row * k + t] = -1.0;
+        }
+        let mut dist2 = vec![0.0f64; k];
+        let mut sum = vec![0.0f64; k];
+        for col in columns.iter() {
+            sum.fill(0.0);
+            for &(row, idx) in col {
+                let v = jn[idx as usize];
+                let c = &by_row[row as usize * k..(row as usize + 1) * k];
+                for (s, c) in sum.iter_mut().zip(c) {
+                    *s += c * v;
+                }
+            }
+            for (d, s) in dist2.iter_mut().zip(&sum) {
+                *d += s * s;
             }
         }
+        confirmed.extend(
+            ks.iter()
+                .zip(&dist2)
+                .filter(|(_, &d)| d <= eps)
+                .map(|(&k, _)| k),
+        );
     }
     if confirmed.len() == suspects.len() {
         return widened;
     }
-    gram.factor(0.0, eps);
+    gram.restore_factor(saved, eps);
     let mut out = base;
     out.extend(confirmed);
     out.sort_unstable();
