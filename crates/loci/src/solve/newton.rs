@@ -661,9 +661,11 @@ impl Component {
         // reached (`keep`) and its residuals (`r_keep`), the answer if the slide towards the
         // nearest one fails; the movement towards the starting point in scaled unknowns (`dz`);
         // a step's right-hand side (`b`), the residual of its refinement (`res`) and `Jnᵀ y`
-        // (`v`), for steps solved with the factorisation of an earlier iteration. Cleared, so
+        // (`v`), for steps solved with the factorisation of an earlier iteration, and the last
+        // step's `y` they start from (`y_last`, only from `WARM_ROWS` rows on). Cleared, so
         // that nothing of an earlier component's solve can reach this one's.
-        let total = 8 * m + self.nnz + 5 * ncols;
+        let warm_start = m >= WARM_ROWS;
+        let total = 7 * m + if warm_start { m } else { 0 } + self.nnz + 5 * ncols;
         if fixed.len() < total {
             fixed.resize(total, 0.0);
         }
@@ -682,7 +684,7 @@ impl Component {
         let (b, rest) = rest.split_at_mut(m);
         let (res, rest) = rest.split_at_mut(m);
         let (v, rest) = rest.split_at_mut(ncols);
-        let (y_last, _) = rest.split_at_mut(m);
+        let (y_last, _) = rest.split_at_mut(if warm_start { m } else { 0 });
         // Whether `y_last` holds the `y` of a step taken in this solve.
         let mut has_last = false;
         self.gather_all(kernels, x, values, xs);
@@ -918,7 +920,7 @@ impl Component {
                         &mut res[..],
                         &mut v[..],
                         &left_out[..],
-                        (has_last && m >= WARM_ROWS).then_some(&y_last[..]),
+                        has_last.then_some(&y_last[..]),
                     ));
                     if !step(gram, y, dx, $project, refine) {
                         reuse = false;
@@ -930,8 +932,10 @@ impl Component {
                         }
                         step(gram, y, dx, $project, None);
                     }
-                    y_last.copy_from_slice(y);
-                    has_last = true;
+                    if warm_start {
+                        y_last.copy_from_slice(y);
+                        has_last = true;
+                    }
                 }};
             }
             // The normalised residual, the quantity the step minimises.
