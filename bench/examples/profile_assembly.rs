@@ -3,6 +3,10 @@
 //! `cargo run --release -p loci-bench --example profile_assembly -- [N] [REPS]`.
 use std::time::Instant;
 
+/// As in `loci-bench`, whose figures these loops break down.
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() {
     let mut args = std::env::args().skip(1);
     let n: usize = args.next().map_or(10, |v| v.parse().expect("N"));

@@ -3,6 +3,10 @@
 use loci::format::json::Problem;
 use std::time::Instant;
 
+/// As in `loci-bench`, whose figures these loops break down.
+#[global_allocator]
+static GLOBAL: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() {
     let mut args = std::env::args().skip(1);
     let path = args.next().expect("usage: profile_small FILE [REPS]");
