@@ -1,7 +1,7 @@
 //! Whole-model checks: every reference exists and has the right type.
 
 use super::{
-    Constraint, EntityId, EntityKind, EntityType, ObjectId, PlaneRule, System, FIELD_NAMES,
+    Constraint, Entity, EntityId, EntityKind, EntityType, ObjectId, PlaneRule, System, FIELD_NAMES,
 };
 use crate::error::ModelError;
 
@@ -14,7 +14,7 @@ impl System {
     /// The first problem found, naming the object and field.
     pub fn validate(&self) -> Result<(), ModelError> {
         self.validate_values()?;
-        crate::par::first_error(self.entities(), |e| self.validate_entity(e.h))?;
+        crate::par::first_error(self.entities(), |e| self.validate_entity(e))?;
         crate::par::first_error(self.constraints(), |c| self.validate_constraint(c))
     }
 
@@ -85,10 +85,8 @@ impl System {
         }
     }
 
-    fn validate_entity(&self, h: EntityId) -> Result<(), ModelError> {
-        let Some(e) = self.entity(h) else {
-            return Ok(());
-        };
+    fn validate_entity(&self, e: &Entity) -> Result<(), ModelError> {
+        let h = e.h;
         let owner = ObjectId::Entity(h);
         for (i, p) in e.kind.params().iter().enumerate() {
             if self.param(*p).is_none() {
