@@ -645,10 +645,15 @@ impl Component {
         // at their solution, and only read the rank there. Where they reach none, the steps
         // below start from the drawing again.
         let mut before = 0;
+        // Whether the steps through `K` ended at the least-squares point of equations that
+        // cannot all hold: `G` is then factorised there once, for the rank test, and no step
+        // is taken through it.
+        let mut least_squares = false;
         if self.by_unknowns(ncols, cfg) {
             match self.solve_by_unknowns(kernels, x, values, cfg) {
                 Some(Reached::Finished(fin)) => return fin,
                 Some(Reached::Solution(steps)) => before = steps,
+                Some(Reached::LeastSquares(steps)) => (before, least_squares) = (steps, true),
                 None => x.copy_from_slice(&x0[..]),
             }
         }
@@ -787,7 +792,7 @@ impl Component {
                 converged = true;
                 break;
             }
-            if !factored || iterations >= cfg.max_iterations {
+            if !factored || iterations >= cfg.max_iterations || least_squares {
                 break;
             }
             if holds {

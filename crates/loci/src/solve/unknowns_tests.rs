@@ -149,8 +149,8 @@ fn check_named(start: &System, a: &Report, b: &Report, what: &str) {
 }
 
 /// Solves `start` both ways: the same outcome, DOF and named constraints, and the same
-/// solution to `1e-7` of the drawing's size (bit for bit where the equations cannot hold).
-/// Returns the report of the default solve.
+/// solution to `1e-7` of the drawing's size (where the equations cannot hold, the same
+/// least-squares point to `1e-6`). Returns the report of the default solve.
 fn check_same(start: &System, what: &str) -> Report {
     let rows_only = Config {
         unknowns_side: false,
@@ -182,8 +182,25 @@ fn check_same(start: &System, what: &str) -> Report {
         let (ma, mb) = (moved(start, G, &xa), moved(start, G, &xb));
         assert!(ma <= mb * (1.0 + 1e-9), "{what}: moved {ma} against {mb}");
     } else {
-        assert_eq!(xa, xb, "{what}");
-        assert_eq!(a.iterations, b.iterations, "{what}");
+        // Both stop at the least-squares point of the equations, the unknowns' side in no more
+        // steps than the equations' (it ends there once its steps find the merit stationary,
+        // where those of the equations wait out a window of steps without progress).
+        assert!(
+            (a.residual - b.residual).abs() <= 1e-6 * b.residual,
+            "{what}: residuals {} and {}",
+            a.residual,
+            b.residual
+        );
+        let scale = xb.iter().fold(1.0f64, |s, v| s.max(v.abs()));
+        let largest = xa
+            .iter()
+            .zip(&xb)
+            .fold(0.0f64, |s, (p, q)| s.max((p - q).abs()));
+        assert!(
+            largest <= 1e-6 * scale,
+            "{what}: the stopping points differ by {largest}"
+        );
+        assert!(a.iterations <= b.iterations, "{what}: {a:?} vs {b:?}");
     }
     a
 }
