@@ -77,6 +77,11 @@ pub(crate) struct Scratch {
 /// How many past merits the line search compares a step with.
 const NONMONOTONE: usize = 4;
 
+/// Where no column of the Jacobian leans on the residual by more than this cosine (the
+/// gradient test of MINPACK's `gtol`, [`stationary`]), the merit is as low as steps can take
+/// it: a residual left there is equations that cannot all hold.
+pub(super) const STATIONARY: f64 = 1e-6;
+
 /// A relative decrease of the merit smaller than this is no progress.
 const STALL: f64 = 1e-6;
 
@@ -980,7 +985,15 @@ impl Component {
             } else {
                 since_best += 1;
             }
-            if damping.is_some() && since_best >= NONMONOTONE && !gram.dropped().is_empty() {
+            // The same once the merit is stationary: the window would only wait out steps that
+            // change its last digits (a 50x50 truss with one impossible length: the last 2 of
+            // its 14 iterations, 12 factorisations).
+            let at_least_squares = damping.is_some()
+                && !gram.dropped().is_empty()
+                && stationary(&self.columns, jn, r, inv, m0) <= STATIONARY;
+            if damping.is_some() && since_best >= NONMONOTONE && !gram.dropped().is_empty()
+                || at_least_squares
+            {
                 // Damped steps found no new low for a whole window either, and some equations
                 // already depend on others here: this is as close as they get. Stop and let the
                 // rank test name what cannot hold (a 1,000-segment chain with two lengths on one
@@ -1213,6 +1226,29 @@ impl Component {
         fin.dependent = fin.dropped.len();
         fin
     }
+}
+
+/// The largest cosine between the residual `rn` (`r` times `inv`) and a column of `Jn`
+/// (values `jn`), with `m0 = |rn|²`: zero where the merit is stationary. Infinity for a
+/// residual of zero, which no least-squares point of impossible equations has.
+pub(super) fn stationary(columns: &Columns, jn: &[f64], r: &[f64], inv: &[f64], m0: f64) -> f64 {
+    if !(m0 > 0.0) {
+        return f64::INFINITY;
+    }
+    let norm = m0.sqrt();
+    columns.iter().fold(0.0f64, |a, col| {
+        let (mut g, mut size) = (0.0, 0.0);
+        for &(row, idx) in col {
+            let j = jn[idx as usize];
+            g += j * r[row as usize] * inv[row as usize];
+            size += j * j;
+        }
+        if size > 0.0 {
+            a.max(g.abs() / (size.sqrt() * norm))
+        } else {
+            a
+        }
+    })
 }
 
 /// The largest move of a step `dx` that landed at `x`, relative to each unknown's size.

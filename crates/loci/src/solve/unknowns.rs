@@ -20,7 +20,7 @@
 //! through `G` with the slide folded in.
 
 use super::gram::{Columns, Gram};
-use super::newton::{generic, Component, Finish, PROJECTED, SLIDE_NOISE};
+use super::newton::{generic, stationary, Component, Finish, PROJECTED, SLIDE_NOISE, STATIONARY};
 use super::rank::{DEPENDENCY_BLOCK, UNION_PROBES};
 use super::Config;
 use crate::equations::Kernel;
@@ -51,15 +51,11 @@ const SLOW: f64 = 0.5;
 const SLOW_STEPS: usize = 4;
 
 /// Slow steps end at a least-squares point rather than give way when, before the last of
-/// them, no column of the Jacobian leans on the residual by more than this cosine (the gradient
-/// test of MINPACK's `gtol`): the merit is then as low as steps can take it, and a residual
-/// left there is equations that cannot all hold. A 100x100 mesh with one impossible length
-/// reached it in 5 steps (cosine 2e-8), which the steps through `G` then took 13 iterations
-/// and 54 factorisations to reach again from the drawing.
-const STATIONARY: f64 = 1e-6;
-
-/// Slow steps go on past [`SLOW_STEPS`] while each shrinks that cosine by this factor or more:
-/// they are closing in on a least-squares point.
+/// them, the merit is stationary ([`STATIONARY`]): a residual left there is equations that
+/// cannot all hold. A 100x100 mesh with one impossible length reached it in 5 steps (cosine
+/// 2e-8), which the steps through `G` then took 13 iterations and 54 factorisations to reach
+/// again from the drawing. They go on past [`SLOW_STEPS`] while each shrinks that cosine by
+/// this factor or more: they are closing in on it (by 10 a step on a 20x20 mesh).
 const CLOSING: f64 = 0.5;
 
 /// Columns of `K` are dropped at this multiple of the rank tolerance (see
@@ -244,8 +240,8 @@ impl Component {
                     x.copy_from_slice(&xt);
                     return Some(Reached::LeastSquares(steps + 1));
                 }
-                // Still on the way to it while the gradient shrinks fast (by 10 a step on a
-                // 20x20 mesh); otherwise the steps give way.
+                // Still on the way to it while the cosine shrinks fast; otherwise the steps
+                // give way.
                 if !(level <= CLOSING * last_level) {
                     return None;
                 }
@@ -264,29 +260,6 @@ impl Component {
         }
         None
     }
-}
-
-/// The largest cosine between the residual `rn` (`r` times `inv`) and a column of `Jn`
-/// (values `jn`), with `m0 = |rn|²`: zero where the merit is stationary. Infinity for a
-/// residual of zero, which no least-squares point of impossible equations has.
-fn stationary(columns: &Columns, jn: &[f64], r: &[f64], inv: &[f64], m0: f64) -> f64 {
-    if !(m0 > 0.0) {
-        return f64::INFINITY;
-    }
-    let norm = m0.sqrt();
-    columns.iter().fold(0.0f64, |a, col| {
-        let (mut g, mut size) = (0.0, 0.0);
-        for &(row, idx) in col {
-            let j = jn[idx as usize];
-            g += j * r[row as usize] * inv[row as usize];
-            size += j * j;
-        }
-        if size > 0.0 {
-            a.max(g.abs() / (size.sqrt() * norm))
-        } else {
-            a
-        }
-    })
 }
 
 /// Into `free` (`dropped.len()` vectors of the unknowns, one after another), each direction in
