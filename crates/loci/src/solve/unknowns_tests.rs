@@ -148,6 +148,16 @@ fn check_named(start: &System, a: &Report, b: &Report, what: &str) {
     }
 }
 
+/// The largest difference between `xa` and `xb`, relative to the size of `xb` (at least 1).
+fn relative_difference(xa: &[f64], xb: &[f64]) -> f64 {
+    let scale = xb.iter().fold(1.0f64, |s, v| s.max(v.abs()));
+    let largest = xa
+        .iter()
+        .zip(xb)
+        .fold(0.0f64, |s, (p, q)| s.max((p - q).abs()));
+    largest / scale
+}
+
 /// Solves `start` both ways: the same outcome, DOF and named constraints, and the same
 /// solution to `1e-7` of the drawing's size (where the equations cannot hold, the same
 /// least-squares point to `1e-6`). Returns the report of the default solve.
@@ -168,15 +178,8 @@ fn check_same(start: &System, what: &str) -> Report {
     }
     if a.outcome.is_ok() {
         assert!(a.residual <= 1e-10, "{what}: {a:?}");
-        let scale = xb.iter().fold(1.0f64, |s, v| s.max(v.abs()));
-        let largest = xa
-            .iter()
-            .zip(&xb)
-            .fold(0.0f64, |s, (p, q)| s.max((p - q).abs()));
-        assert!(
-            largest <= 1e-7 * scale,
-            "{what}: the solutions differ by {largest}"
-        );
+        let largest = relative_difference(&xa, &xb);
+        assert!(largest <= 1e-7, "{what}: the solutions differ by {largest}");
         // And no farther from the drawing (the steps through `Jᵀ J` settle at least as close
         // to the nearest solution).
         let (ma, mb) = (moved(start, G, &xa), moved(start, G, &xb));
@@ -191,13 +194,9 @@ fn check_same(start: &System, what: &str) -> Report {
             a.residual,
             b.residual
         );
-        let scale = xb.iter().fold(1.0f64, |s, v| s.max(v.abs()));
-        let largest = xa
-            .iter()
-            .zip(&xb)
-            .fold(0.0f64, |s, (p, q)| s.max((p - q).abs()));
+        let largest = relative_difference(&xa, &xb);
         assert!(
-            largest <= 1e-6 * scale,
+            largest <= 1e-6,
             "{what}: the stopping points differ by {largest}"
         );
         assert!(a.iterations <= b.iterations, "{what}: {a:?} vs {b:?}");
