@@ -985,14 +985,14 @@ impl Component {
             } else {
                 since_best += 1;
             }
-            // The same once the merit is stationary: the window would only wait out steps that
-            // change its last digits (a 50x50 truss with one impossible length: the last 2 of
-            // its 14 iterations, 12 factorisations).
-            let at_least_squares = damping.is_some()
-                && !gram.dropped().is_empty()
-                && stationary(&self.columns, jn, r, inv, m0) <= STATIONARY;
-            if damping.is_some() && since_best >= NONMONOTONE && !gram.dropped().is_empty()
-                || at_least_squares
+            // Damped steps where some equations already depend on others.
+            let damped_dependent = damping.is_some() && !gram.dropped().is_empty();
+            // A window without a new low, or the merit stationary: the window would only wait
+            // out steps that change its last digits (a 50x50 truss with one impossible length:
+            // the last 2 of its 14 iterations, 12 factorisations).
+            if damped_dependent
+                && (since_best >= NONMONOTONE
+                    || stationary(&self.columns, jn, r, inv, m0) <= STATIONARY)
             {
                 // Damped steps found no new low for a whole window either, and some equations
                 // already depend on others here: this is as close as they get. Stop and let the
@@ -1002,11 +1002,11 @@ impl Component {
                 // lengths become dependent, is only reached by crawling.
                 break;
             }
-            if damping.is_some_and(|d| d <= CRAWL_DAMPING)
+            if damped_dependent
+                && damping.is_some_and(|d| d <= CRAWL_DAMPING)
                 && iterations >= damped_from + CRAWL_PATIENCE
                 && history.len() > NONMONOTONE
                 && m0 > (1.0 - CRAWL) * history[history.len() - 1 - NONMONOTONE]
-                && !gram.dropped().is_empty()
             {
                 // The same, sooner: damped steps of Gauss-Newton length still lower the merit
                 // but by next to nothing (a 30x30 sheet of profiles with one impossible length
