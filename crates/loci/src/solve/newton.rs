@@ -1170,11 +1170,25 @@ impl Component {
             r.copy_from_slice(r_keep);
             converged = true;
         }
+        // The rows dependent at the solution, when read before the slide below and the slide
+        // did not move the unknowns.
+        let mut revealed: Option<Vec<usize>> = None;
         // A start that already holds is its own nearest solution; a solve whose steps slid
         // is at the nearest one (or as near as the slide's rounds took it).
         if converged && cfg.nearest && factored && iterations > 0 && !(fold && damping.is_none()) {
             if let Some(gram) = gram_slot.as_mut() {
-                if m - gram.dropped().len() < ncols {
+                let mut kept = m - gram.dropped().len();
+                // Whether a free direction is left is read from the rank at the solution:
+                // rounding over thousands of dependent rows can keep a dependent pivot, and a
+                // pinned 50x50 mesh then looked fully constrained, its rotation was left
+                // 1.9e-7 short of the one nearest the drawing.
+                if kept >= ncols {
+                    let dropped = rank::reveal(gram, &self.columns, jn, cfg.rank_tolerance);
+                    kept = m - dropped.len();
+                    revealed = Some(dropped);
+                }
+                if kept < ncols {
+                    revealed = None;
                     let mut work = Work {
                         r,
                         jn,
@@ -1210,7 +1224,9 @@ impl Component {
             // At a solution, the rank is checked where rounding could hide a dependence; where
             // the solve stopped short, near-dependence is the conflict itself, and only the
             // count is checked.
-            fin.dropped = if converged {
+            fin.dropped = if let Some(dropped) = revealed.filter(|_| converged) {
+                dropped
+            } else if converged {
                 rank::reveal(gram, &self.columns, jn, cfg.rank_tolerance)
             } else {
                 let k = self.unknowns.as_mut().and_then(Option::as_mut);
