@@ -26,7 +26,7 @@ pub(super) fn run(start: &System, group: u32, cfg: &Config) -> (Report, Vec<f64>
 }
 
 /// The values of group `group`'s parameters, in order.
-fn group_values(sys: &System, group: u32) -> Vec<f64> {
+pub(super) fn group_values(sys: &System, group: u32) -> Vec<f64> {
     sys.params()
         .iter()
         .filter(|p| p.group.0 == group)

@@ -2,7 +2,7 @@
 //! and trusses, solvable, redundant and inconsistent, of a few sizes, the same outcome, DOF,
 //! named constraints and (to the slide's tolerance) the same solution.
 
-use super::test_support::{moved, run, Rng};
+use super::test_support::{group_values, moved, run, Rng};
 use super::{solve, Config, Outcome, Report};
 use crate::model::{Constraint, ConstraintKind as K, Entity, Param, System};
 
@@ -273,13 +273,7 @@ fn a_mesh_with_a_dragged_point_ends_as_through_the_equations() {
     let solve_with = |cfg: &Config| {
         let mut sys = start.clone();
         let report = solve(&mut sys, G.into(), &dragged, cfg).unwrap();
-        let values: Vec<f64> = sys
-            .params()
-            .iter()
-            .filter(|p| p.group.0 == G)
-            .map(|p| p.val)
-            .collect();
-        (report, values)
+        (report, group_values(&sys, G))
     };
     let rows_only = Config {
         unknowns_side: false,
@@ -356,12 +350,7 @@ fn rotation_to_nearest(x: &[f64], x0: &[f64], pin: [f64; 2]) -> f64 {
 #[test]
 fn a_large_pinned_mesh_ends_at_the_rotation_nearest_the_drawing_either_way() {
     let start = lattice(50, 11, 0.6, true, Variant::Solvable);
-    let x0: Vec<f64> = start
-        .params()
-        .iter()
-        .filter(|p| p.group.0 == G)
-        .map(|p| p.val)
-        .collect();
+    let x0 = group_values(&start, G);
     let at = |h: u32| start.params().iter().find(|p| p.h.0 == h).unwrap().val;
     let pin = [at(1000), at(1001)];
     let rows_only = Config {
