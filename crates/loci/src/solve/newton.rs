@@ -1170,8 +1170,8 @@ impl Component {
             r.copy_from_slice(r_keep);
             converged = true;
         }
-        // The rows dependent at the solution, when read before the slide below and the slide
-        // did not move the unknowns.
+        // The rows dependent at the solution, when the check below read them and no slide
+        // moved the unknowns after it.
         let mut revealed: Option<Vec<usize>> = None;
         // A start that already holds is its own nearest solution; a solve whose steps slid
         // is at the nearest one (or as near as the slide's rounds took it).
@@ -1224,7 +1224,7 @@ impl Component {
             // At a solution, the rank is checked where rounding could hide a dependence; where
             // the solve stopped short, near-dependence is the conflict itself, and only the
             // count is checked.
-            fin.dropped = if let Some(dropped) = revealed.filter(|_| converged) {
+            fin.dropped = if let Some(dropped) = revealed {
                 dropped
             } else if converged {
                 rank::reveal(gram, &self.columns, jn, cfg.rank_tolerance)
