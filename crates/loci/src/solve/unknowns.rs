@@ -216,7 +216,12 @@ impl Component {
             // From a solution, the whole step: it only slides along the solutions, and the
             // steps after it restore what its curvature breaks.
             let m0 = merit(&r, &inv);
-            let level = stationary(columns, &jn, &r, &inv, m0);
+            // The gradient test, only once this step or the next can be the last slow one.
+            let level = if slow + 2 >= SLOW_STEPS {
+                stationary(columns, &jn, &r, &inv, m0)
+            } else {
+                f64::INFINITY
+            };
             let mut alpha = 1.0;
             let mut accepted = false;
             for _ in 0..BACKTRACKS {
