@@ -19,6 +19,8 @@ pub(crate) mod newton;
 mod order;
 mod plan;
 pub(crate) mod rank;
+#[cfg(test)]
+mod rank_tests;
 mod report;
 #[cfg(test)]
 mod slide_tests;
