@@ -216,13 +216,7 @@ pub(super) fn drop_one_at_a_time(
         for &d in dropped.iter().chain([&worst]) {
             out[d] = true;
         }
-        for col in columns.iter() {
-            for &(row, idx) in col {
-                if out[row as usize] {
-                    without[idx as usize] = 0.0;
-                }
-            }
-        }
+        zero_rows(columns, &mut without, &out);
         gram.assemble(&without);
         if !gram.factor(0.0, eps) {
             break;
@@ -313,13 +307,7 @@ pub(super) fn drop_together(
         }
     }
     let mut without = jn.to_vec();
-    for col in columns.iter() {
-        for &(row, idx) in col {
-            if out[row as usize] {
-                without[idx as usize] = 0.0;
-            }
-        }
-    }
+    zero_rows(columns, &mut without, &out);
     gram.assemble(&without);
     if gram.factor(0.0, eps) {
         let now = gram.dropped();
@@ -330,6 +318,17 @@ pub(super) fn drop_together(
     gram.assemble(jn);
     gram.factor(0.0, eps);
     None
+}
+
+/// Zeroes the entries of the rows marked in `out` among the Jacobian values `values`.
+fn zero_rows(columns: &Columns, values: &mut [f64], out: &[bool]) {
+    for col in columns.iter() {
+        for &(row, idx) in col {
+            if out[row as usize] {
+                values[idx as usize] = 0.0;
+            }
+        }
+    }
 }
 
 /// Modified Gram-Schmidt on the vectors of `y` (each `m` long, one after another), the rows
