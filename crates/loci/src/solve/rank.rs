@@ -258,13 +258,12 @@ pub(super) fn drop_together(
         for (i, v) in yj.iter_mut().enumerate() {
             *v = generic(i, base.len() + j);
         }
+        for &b in base {
+            yj[b] = 0.0;
+        }
     }
     for _ in 0..INVERSE_STEPS {
-        for yj in y.chunks_mut(m.max(1)) {
-            for &b in base {
-                yj[b] = 0.0;
-            }
-        }
+        // `orthonormalise` zeroes the rows `base` again for the next solve.
         gram.solve_many(&mut y, d);
         if !orthonormalise(&mut y, m, base) {
             return None;
