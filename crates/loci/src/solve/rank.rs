@@ -172,11 +172,10 @@ pub(super) fn drop_one_at_a_time(
     target: usize,
     eps: f64,
 ) -> Option<Vec<usize>> {
-    let (m, n) = (gram.rows(), columns.len());
+    let m = gram.rows();
     let mut without = jn.to_vec();
     let mut dropped = base.to_vec();
     let mut y = vec![0.0; m];
-    let mut g = vec![0.0; n];
     while dropped.len() < target {
         for (i, v) in y.iter_mut().enumerate() {
             *v = generic(i, dropped.len());
@@ -193,13 +192,7 @@ pub(super) fn drop_one_at_a_time(
             y.iter_mut().for_each(|v| *v /= size);
         }
         // Jᵀ y, with the rows already dropped left out.
-        for (c, col) in columns.iter().enumerate() {
-            g[c] = col
-                .iter()
-                .map(|&(row, idx)| without[idx as usize] * y[row as usize])
-                .sum();
-        }
-        let gg: f64 = g.iter().map(|v| v * v).sum();
+        let gg = jt_norm2(columns, &without, &y);
         let yy: f64 = y.iter().map(|v| v * v).sum();
         let Some(worst) = (0..m)
             .filter(|i| dropped.binary_search(i).is_err())
@@ -271,17 +264,7 @@ pub(super) fn drop_together(
     }
     // Each direction confirmed in `J` itself.
     for yj in y.chunks(m.max(1)) {
-        let gg: f64 = columns
-            .iter()
-            .map(|col| {
-                let g: f64 = col
-                    .iter()
-                    .map(|&(row, idx)| jn[idx as usize] * yj[row as usize])
-                    .sum();
-                g * g
-            })
-            .sum();
-        if !(gg <= eps) {
+        if !(jt_norm2(columns, jn, yj) <= eps) {
             return None;
         }
     }
@@ -317,6 +300,21 @@ pub(super) fn drop_together(
     gram.assemble(jn);
     gram.factor(0.0, eps);
     None
+}
+
+/// `‖Jᵀ y‖²`, with `J` given by its columns and the values `values`: how far `y` is from a
+/// dependence among the rows of `J`.
+fn jt_norm2(columns: &Columns, values: &[f64], y: &[f64]) -> f64 {
+    columns
+        .iter()
+        .map(|col| {
+            let g: f64 = col
+                .iter()
+                .map(|&(row, idx)| values[idx as usize] * y[row as usize])
+                .sum();
+            g * g
+        })
+        .sum()
 }
 
 /// Zeroes the entries of the rows marked in `out` among the Jacobian values `values`.
