@@ -98,6 +98,35 @@ const CRAWL: f64 = 1e-2;
 /// shown from where the crawl begins).
 const CRAWL_PATIENCE: usize = 24;
 
+/// The largest residual, in tolerances, above which [`settles_above`] may end a solve: a
+/// merit near rounding creeps down by rounding, at any rate.
+const SETTLE_RESIDUAL: f64 = 1e4;
+
+/// Damped iterations before [`settles_above`] may end a solve.
+const SETTLE_PATIENCE: usize = 3;
+
+/// The fraction of the merit that the decrease still to come, extrapolated from the last
+/// steps' rate (see [`settles_above`]), must stay under.
+const SETTLE: f64 = 0.1;
+
+/// Whether the last merits of `history` (the current one last) fall ever more slowly, at a
+/// steady linear rate, towards a limit above zero: the decrease still to come at the slowest
+/// of the last rates, `d ρ / (1 - ρ)` after a decrease `d`, is under [`SETTLE`] of the merit.
+/// Gauss-Newton steps converge so to a least-squares point whose residual is not zero, while
+/// a merit falling to zero at a linear rate keeps its decreases a fixed fraction of itself.
+fn settles_above(history: &[f64]) -> bool {
+    let [a, b, c, d] = match history.len().checked_sub(4) {
+        Some(k) => [history[k], history[k + 1], history[k + 2], history[k + 3]],
+        None => return false,
+    };
+    let (d1, d2, d3) = (a - b, b - c, c - d);
+    if !(d1 > 0.0 && d2 > 0.0 && d3 > 0.0 && d > 0.0) {
+        return false;
+    }
+    let rate = (d2 / d1).max(d3 / d2);
+    rate < 1.0 && d3 * rate / (1.0 - rate) < SETTLE * d
+}
+
 /// The largest damping at which a crawl (see [`CRAWL`]) reads as a least-squares point: with
 /// more, short steps are the damping's, not the problem's.
 const CRAWL_DAMPING: f64 = 1e-4;
@@ -1020,6 +1049,14 @@ impl Component {
                 // The same, sooner: damped steps of Gauss-Newton length still lower the merit
                 // but by next to nothing (a 30x30 sheet of profiles with one impossible length
                 // crept from 0.1473 to 0.1469 over 50 iterations, and went on to 1,000).
+                break;
+            }
+            if damped_dependent
+                && damping.is_some_and(|d| d <= CRAWL_DAMPING)
+                && iterations >= damped_from + SETTLE_PATIENCE
+                && r.iter().fold(0.0f64, |a, v| a.max(v.abs())) > SETTLE_RESIDUAL * cfg.tolerance
+                && settles_above(&history)
+            {
                 break;
             }
             if sliding && holds {
