@@ -426,9 +426,45 @@ fn conflict_sets(
     // tried (it is tried again only once another is shown).
     let mut rests_hold = false;
     let mut union_tried: Option<usize> = None;
+    // The candidates shown to hold (each is part of a set that holds), and how many conflicts
+    // were shown when candidates that share nothing with them were last checked together.
+    let mut holding = vec![false; candidates.len()];
+    let mut apart_tried: Option<usize> = None;
+    let shows = |c: &[Member], out: &[ConflictSet]| {
+        out.iter().any(|o| o.members.iter().all(|m| c.contains(m)))
+    };
     for (i, c) in candidates.iter().enumerate() {
-        if out.iter().any(|o| o.members.iter().all(|m| c.contains(m))) {
+        if holding[i] || shows(c, &out) {
             continue;
+        }
+        // Once a conflict is shown, the other circuits that read as conflicting are mostly the
+        // least-squares point spreading its residual: sets apart from it that hold (one
+        // impossible length in a 10x10 mesh: 33 such sets of 10 to 64 constraints, each solved
+        // alone, half of naming the conflict). This candidate and every later one that shares
+        // nothing with the conflicts shown are solved together first: when they hold, so does
+        // each. When they do not, each is checked as before.
+        if !out.is_empty() && rest_of(c, &out).is_none() && apart_tried != Some(out.len()) {
+            apart_tried = Some(out.len());
+            let apart: Vec<usize> = (i..candidates.len())
+                .filter(|&j| {
+                    let d = &candidates[j];
+                    !holding[j] && !shows(d, &out) && rest_of(d, &out).is_none()
+                })
+                .collect();
+            if apart.len() > 1 {
+                let mut union: Vec<Member> = apart
+                    .iter()
+                    .flat_map(|&j| candidates[j].iter().copied())
+                    .collect();
+                union.sort_by(Member::report_order);
+                union.dedup();
+                if minimal::holds(eqs, &union, starts, cfg) {
+                    for &j in &apart {
+                        holding[j] = true;
+                    }
+                    continue;
+                }
+            }
         }
         // A candidate through the constraints every conflict shown so far shares, which holds
         // without them, is one more conflict that changing those constraints ends: it names
