@@ -58,6 +58,9 @@ pub(crate) struct Finish {
     /// The normal equations would need more than [`super::gram::MAX_PRODUCTS`] products: not
     /// attempted.
     pub too_large: bool,
+    /// Stopped before its first step: a row the first factorisation dropped was only just
+    /// dependent (see [`MARGINAL`]); to be solved again at the tighter rank tolerance.
+    pub marginal: bool,
 }
 
 /// Work vectors reused across components, so that many small components cost no allocations.
@@ -126,6 +129,15 @@ fn settles_above(history: &[f64]) -> bool {
     let rate = (d2 / d1).max(d3 / d2);
     rate < 1.0 && d3 * rate / (1.0 - rate) < SETTLE * d
 }
+
+/// Rows dropped by the first factorisation of a large component, all of which a factorisation
+/// at this fraction of the rank tolerance keeps, are only just dependent there (see
+/// [`Component::solve`]). Where that one drops some too, or where equations outnumber the
+/// unknowns, the component has dependent rows (redundant constraints), and rows near the rank
+/// tolerance are as likely to be rounding: a 70x70 mesh with thousands of dependent rows
+/// solved at the tighter tolerance was read with 0 DOF instead of 1. The test costs one
+/// factorisation, in the solves where it applies.
+const MARGINAL: f64 = 1e-3;
 
 /// The largest damping at which a crawl (see [`CRAWL`]) reads as a least-squares point: with
 /// more, short steps are the damping's, not the problem's.
@@ -655,6 +667,18 @@ impl Component {
     }
 
     /// Solves from `x` in place.
+    ///
+    /// A large component whose first factorisation drops rows of which some do not hold, and
+    /// which a factorisation at [`MARGINAL`] times the rank tolerance keeps, every one, is
+    /// solved at that tighter tolerance throughout, its rank included. Such a row is no
+    /// dependency but a
+    /// structure that bends easily: each column of a 190x190 sheet of profiles is a chain of
+    /// 190 edges held by relative angles, whose smallest squared singular value falls under
+    /// the rank tolerance (1e-10) at that size. Dropped, the row was left out of every plain
+    /// step, the steps folded the sheet, and a sketch built from a solution was reported
+    /// inconsistent with 54,632 constraints named (190 did not converge; 199, 200, 201 and
+    /// 210 inconsistent; sizes up to 185 solved in 6 iterations). At 1e-11 or below, it
+    /// solves in 6 iterations with 0 DOF.
     pub fn solve(
         &mut self,
         kernels: &[Kernel],
@@ -662,6 +686,27 @@ impl Component {
         values: &[f64],
         cfg: &Config,
         scratch: &mut Scratch,
+    ) -> Finish {
+        let fin = self.solve_at(kernels, x, values, cfg, scratch, true);
+        if !fin.marginal {
+            return fin;
+        }
+        let tight = Config {
+            rank_tolerance: cfg.rank_tolerance * MARGINAL,
+            ..cfg.clone()
+        };
+        self.solve_at(kernels, x, values, &tight, scratch, false)
+    }
+
+    /// [`Component::solve`], with `marginal` the test for a marginal row at the start.
+    fn solve_at(
+        &mut self,
+        kernels: &[Kernel],
+        x: &mut [f64],
+        values: &[f64],
+        cfg: &Config,
+        scratch: &mut Scratch,
+        marginal: bool,
     ) -> Finish {
         let m = self.rows;
         let ncols = x.len();
@@ -675,6 +720,7 @@ impl Component {
                 unsatisfied: Vec::new(),
                 residual: f64::NAN,
                 too_large: true,
+                marginal: false,
             };
         }
         let Scratch { fixed, xs, jl, x0 } = scratch;
@@ -800,6 +846,37 @@ impl Component {
                 factored = gram.factor(0.0, cfg.rank_tolerance);
                 stale = false;
                 left_out = gram.dropped();
+            }
+            if marginal
+                && iterations == 0
+                && before == 0
+                && nudges == 0
+                && factored
+                && m >= STUCK_SIZE
+                && m <= ncols
+                && left_out.iter().any(|&d| !(r[d].abs() <= cfg.tolerance))
+            {
+                let ok = gram.factor(0.0, cfg.rank_tolerance * MARGINAL);
+                if ok && gram.dropped().is_empty() {
+                    self.gram = gram_slot;
+                    return Finish {
+                        converged: false,
+                        iterations: 0,
+                        dropped: Vec::new(),
+                        dependent: 0,
+                        dependencies: Vec::new(),
+                        unsatisfied: Vec::new(),
+                        residual: f64::NAN,
+                        too_large: false,
+                        marginal: true,
+                    };
+                }
+                // The same rows dropped (the tighter drops a subset) is the same
+                // factorisation; a failed one is redone.
+                if !ok {
+                    factored = gram.factor(0.0, cfg.rank_tolerance);
+                    left_out = gram.dropped();
+                }
             }
             if iterations == 0 && cfg.nearest && factored {
                 fold = cfg.fold_slide && m - gram.dropped().len() < ncols;
@@ -1259,6 +1336,7 @@ impl Component {
             unsatisfied: (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect(),
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
             too_large: false,
+            marginal: false,
         };
         self.gram = gram_slot;
         // `K`'s structure, shared with the steps through it, counts the free directions

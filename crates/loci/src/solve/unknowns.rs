@@ -444,6 +444,7 @@ impl Component {
             unsatisfied: Vec::new(),
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
             too_large: false,
+            marginal: false,
         })
     }
 }

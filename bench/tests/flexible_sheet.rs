@@ -1,0 +1,29 @@
+//! A sheet of closed profiles large enough that each of its columns, a chain of 190 edges held
+//! by lengths and relative angles, bends more easily than the rank tolerance tells from a
+//! dependency: the smallest squared singular value of its Jacobian falls under 1e-10. Built
+//! from a solution, it must solve, fully constrained, rather than be reported inconsistent.
+
+use loci::{Config, Outcome};
+use loci_bench::generate::generate;
+use loci_bench::problem::{Family, Variant};
+use loci_bench::slvs::{self, SOLVE_GROUP};
+
+#[test]
+fn a_190x190_sheet_of_profiles_solves_with_no_freedom_left() {
+    let p = generate(Family::Profiles, Variant::Solvable, 190);
+    let sp = slvs::build(&p).expect("translates to the SolveSpace model");
+    let mut sys = sp.system.clone();
+    let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    // It was `did_not_converge` with 192,902 constraints named (and sizes 199 to 210
+    // `inconsistent`): the row dropped at the start was left out of every plain step.
+    assert_eq!(
+        r.outcome,
+        Outcome::Okay,
+        "{:?}",
+        (r.outcome, r.dof, r.failed.len())
+    );
+    assert_eq!(r.dof, 0);
+    assert!(r.failed.is_empty());
+    assert!(r.residual <= 1e-10, "{}", r.residual);
+    assert!(r.iterations <= 10, "{}", r.iterations);
+}
