@@ -27,3 +27,23 @@ fn a_190x190_sheet_of_profiles_solves_with_no_freedom_left() {
     assert!(r.residual <= 1e-10, "{}", r.residual);
     assert!(r.iterations <= 10, "{}", r.iterations);
 }
+
+#[test]
+fn the_same_sheet_with_one_redundant_constraint_solves_and_names_it() {
+    let p = generate(Family::Profiles, Variant::Redundant, 190);
+    let sp = slvs::build(&p).expect("translates to the SolveSpace model");
+    let mut sys = sp.system.clone();
+    let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    // One row depends on the others for certain, and one only just: the rank tolerance is
+    // tightened where no more than a few rows depend on the others.
+    assert_eq!(
+        r.outcome,
+        Outcome::RedundantOkay,
+        "{:?}",
+        (r.outcome, r.dof, r.failed.len())
+    );
+    assert_eq!(r.dof, 0);
+    assert!(r.residual <= 1e-10, "{}", r.residual);
+    let extra = sp.system.constraints().last().expect("constraints").h;
+    assert!(r.failed.contains(&extra), "{:?}", r.failed);
+}

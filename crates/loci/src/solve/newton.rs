@@ -130,14 +130,17 @@ fn settles_above(history: &[f64]) -> bool {
     rate < 1.0 && d3 * rate / (1.0 - rate) < SETTLE * d
 }
 
-/// Rows dropped by the first factorisation of a large component, all of which a factorisation
-/// at this fraction of the rank tolerance keeps, are only just dependent there (see
-/// [`Component::solve`]). Where that one drops some too, or where equations outnumber the
-/// unknowns, the component has dependent rows (redundant constraints), and rows near the rank
-/// tolerance are as likely to be rounding: a 70x70 mesh with thousands of dependent rows
-/// solved at the tighter tolerance was read with 0 DOF instead of 1. The test costs one
-/// factorisation, in the solves where it applies.
+/// Rows dropped by the first factorisation of a large component that a factorisation at this
+/// fraction of the rank tolerance keeps are only just dependent there (see
+/// [`Component::solve`]), where at most [`MARGINAL_DEPENDENT`] rows depend on the others.
 const MARGINAL: f64 = 1e-3;
+
+/// The most rows the tighter factorisation of [`MARGINAL`] may still drop (and by which
+/// equations may outnumber unknowns), a few redundant constraints. Where thousands of rows
+/// depend on others, the rounding of their eliminations lands pivots near the rank tolerance
+/// too: a 70x70 mesh with 4,624 dependent rows, solved at the tighter tolerance, was read
+/// with 0 DOF instead of 1. The test costs one factorisation, in the solves where it applies.
+const MARGINAL_DEPENDENT: usize = 8;
 
 /// The largest damping at which a crawl (see [`CRAWL`]) reads as a least-squares point: with
 /// more, short steps are the damping's, not the problem's.
@@ -668,10 +671,10 @@ impl Component {
 
     /// Solves from `x` in place.
     ///
-    /// A large component whose first factorisation drops rows of which some do not hold, and
-    /// which a factorisation at [`MARGINAL`] times the rank tolerance keeps, every one, is
-    /// solved at that tighter tolerance throughout, its rank included. Such a row is no
-    /// dependency but a
+    /// A large component whose first factorisation drops rows of which some do not hold, some
+    /// of which a factorisation at [`MARGINAL`] times the rank tolerance keeps, is solved at
+    /// that tighter tolerance throughout, its rank included, where only a few rows depend on
+    /// others ([`MARGINAL_DEPENDENT`]). Such a row is no dependency but a
     /// structure that bends easily: each column of a 190x190 sheet of profiles is a chain of
     /// 190 edges held by relative angles, whose smallest squared singular value falls under
     /// the rank tolerance (1e-10) at that size. Dropped, the row was left out of every plain
@@ -853,11 +856,12 @@ impl Component {
                 && nudges == 0
                 && factored
                 && m >= STUCK_SIZE
-                && m <= ncols
+                && m <= ncols + MARGINAL_DEPENDENT
                 && left_out.iter().any(|&d| !(r[d].abs() <= cfg.tolerance))
             {
                 let ok = gram.factor(0.0, cfg.rank_tolerance * MARGINAL);
-                if ok && gram.dropped().is_empty() {
+                let tighter = if ok { gram.dropped() } else { Vec::new() };
+                if ok && tighter.len() < left_out.len() && tighter.len() <= MARGINAL_DEPENDENT {
                     self.gram = gram_slot;
                     return Finish {
                         converged: false,
