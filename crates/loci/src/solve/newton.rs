@@ -63,6 +63,24 @@ pub(crate) struct Finish {
     pub marginal: bool,
 }
 
+impl Finish {
+    /// A solve that took no step: the component too large to try (`too_large`), or to be
+    /// solved again at a tighter rank tolerance (`marginal`).
+    fn without_steps(too_large: bool, marginal: bool) -> Self {
+        Self {
+            converged: false,
+            iterations: 0,
+            dropped: Vec::new(),
+            dependent: 0,
+            dependencies: Vec::new(),
+            unsatisfied: Vec::new(),
+            residual: f64::NAN,
+            too_large,
+            marginal,
+        }
+    }
+}
+
 /// Work vectors reused across components, so that many small components cost no allocations.
 #[derive(Default)]
 pub(crate) struct Scratch {
@@ -714,17 +732,7 @@ impl Component {
         let m = self.rows;
         let ncols = x.len();
         if Gram::products(&self.columns) > super::gram::MAX_PRODUCTS {
-            return Finish {
-                converged: false,
-                iterations: 0,
-                dropped: Vec::new(),
-                dependent: 0,
-                dependencies: Vec::new(),
-                unsatisfied: Vec::new(),
-                residual: f64::NAN,
-                too_large: true,
-                marginal: false,
-            };
+            return Finish::without_steps(true, false);
         }
         let Scratch { fixed, xs, jl, x0 } = scratch;
         if cfg.nearest {
@@ -863,17 +871,7 @@ impl Component {
                 let tighter = if ok { gram.dropped() } else { Vec::new() };
                 if ok && tighter.len() < left_out.len() && tighter.len() <= MARGINAL_DEPENDENT {
                     self.gram = gram_slot;
-                    return Finish {
-                        converged: false,
-                        iterations: 0,
-                        dropped: Vec::new(),
-                        dependent: 0,
-                        dependencies: Vec::new(),
-                        unsatisfied: Vec::new(),
-                        residual: f64::NAN,
-                        too_large: false,
-                        marginal: true,
-                    };
+                    return Finish::without_steps(false, true);
                 }
                 // The same rows dropped (the tighter drops a subset) is the same
                 // factorisation; a failed one is redone.
