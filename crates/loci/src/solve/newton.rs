@@ -692,14 +692,14 @@ impl Component {
     /// A large component whose first factorisation drops rows of which some do not hold, some
     /// of which a factorisation at [`MARGINAL`] times the rank tolerance keeps, is solved at
     /// that tighter tolerance throughout, its rank included, where only a few rows depend on
-    /// others ([`MARGINAL_DEPENDENT`]). Such a row is no dependency but a
-    /// structure that bends easily: each column of a 190x190 sheet of profiles is a chain of
-    /// 190 edges held by relative angles, whose smallest squared singular value falls under
-    /// the rank tolerance (1e-10) at that size. Dropped, the row was left out of every plain
-    /// step, the steps folded the sheet, and a sketch built from a solution was reported
-    /// inconsistent with 54,632 constraints named (190 did not converge; 199, 200, 201 and
-    /// 210 inconsistent; sizes up to 185 solved in 6 iterations). At 1e-11 or below, it
-    /// solves in 6 iterations with 0 DOF.
+    /// others ([`MARGINAL_DEPENDENT`]). Such a row is no dependency but a structure that
+    /// bends easily: each column of a 190x190 sheet of profiles is a chain of 190 edges held
+    /// by relative angles, whose smallest squared singular value falls under the rank
+    /// tolerance (1e-10) at that size. Dropped, the row was left out of every plain step, the
+    /// steps folded the sheet, and a sketch built from a solution was reported inconsistent
+    /// with 54,632 constraints named (190 did not converge; 199, 200, 201 and 210
+    /// inconsistent; sizes up to 185 solved in 6 iterations). At 1e-11 or below, it solves in
+    /// 6 iterations with 0 DOF.
     pub fn solve(
         &mut self,
         kernels: &[Kernel],
@@ -1133,7 +1133,7 @@ impl Component {
             if damped_dependent
                 && damping.is_some_and(|d| d <= CRAWL_DAMPING)
                 && iterations >= damped_from + SETTLE_PATIENCE
-                && r.iter().fold(0.0f64, |a, v| a.max(v.abs())) > SETTLE_RESIDUAL * cfg.tolerance
+                && max_r > SETTLE_RESIDUAL * cfg.tolerance
                 && settles_above(&history)
             {
                 break;
