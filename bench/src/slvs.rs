@@ -65,30 +65,18 @@ fn add_plane(
     Ok(we)
 }
 
-/// The value of an angle constraint between lines `l1` and `l2` whose intended angle is
-/// `deg` (signed in 2D, counter-clockwise from `l1` to `l2`).
+/// The angle constraint between lines `l1` and `l2` whose intended angle is `deg` (signed in
+/// 2D, counter-clockwise from `l1` to `l2`).
 ///
-/// In a workplane loci's angle is oriented: it keeps the sign the angle has where the solve
-/// starts, and a negative value asks for the opposite of that sign. Written this way, loci
-/// receives the intended sign as ezpz and PlaneGCS do, even where the start has turned a
-/// small angle the other way. (Given `|deg|` alone, loci would keep the drawn sign: a
-/// different sketch, and for the `profiles` family an impossible one.) SolveSpace's angle is
-/// a cosine, even in the value, so the sign does not change what it solves. In space the
-/// angle is unsigned.
-fn angle_value(p: &Problem, l1: usize, l2: usize, deg: f64) -> f64 {
-    if !p.planar {
-        return deg.abs();
-    }
-    let dir = |l: usize| {
-        let [a, b] = p.lines[l];
-        let (s, e) = (p.points[a].start, p.points[b].start);
-        [e[0] - s[0], e[1] - s[1]]
-    };
-    let (u, v) = (dir(l1), dir(l2));
-    if u[0] * v[1] - u[1] * v[0] < 0.0 {
-        -deg
+/// In a workplane it is a signed angle, as ezpz's and PlaneGCS's are: the intended sign holds
+/// even where the start has turned a small angle the other way. (SolveSpace's angle, with
+/// `|deg|` alone, keeps the drawn turn: a different sketch, and for the `profiles` family an
+/// impossible one.) In space the angle has no sign.
+fn angle(c: Constraint, planar: bool, deg: f64) -> Constraint {
+    if planar {
+        c.with_val(deg).as_signed()
     } else {
-        deg
+        c.with_val(deg.abs())
     }
 }
 
@@ -157,9 +145,11 @@ pub fn build(p: &Problem) -> anyhow::Result<SlvsProblem> {
             Con::Distance { a, b, d } => new(K::PtPtDistance)
                 .with_points(points[a], points[b])
                 .with_val(d),
-            Con::Angle { l1, l2, deg } => new(K::Angle)
-                .with_entities([lines[l1], lines[l2], 0, 0])
-                .with_val(angle_value(p, l1, l2, deg)),
+            Con::Angle { l1, l2, deg } => angle(
+                new(K::Angle).with_entities([lines[l1], lines[l2], 0, 0]),
+                p.planar,
+                deg,
+            ),
             Con::Horizontal { l } => new(K::Horizontal).with_entities([lines[l], 0, 0, 0]),
             Con::Vertical { l } => new(K::Vertical).with_entities([lines[l], 0, 0, 0]),
             Con::ArcRadius { arc, r } => new(K::Diameter)

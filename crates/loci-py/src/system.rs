@@ -409,7 +409,7 @@ impl PySystem {
     /// with SolveSpace's fields. Returns its handle.
     #[pyo3(signature = (r#type, *, group = 1, workplane = None, value = 0.0, pt_a = None,
         pt_b = None, entity_a = None, entity_b = None, entity_c = None, entity_d = None,
-        other = false, other2 = false, reference = false, handle = None))]
+        other = false, other2 = false, reference = false, signed = false, handle = None))]
     #[allow(clippy::too_many_arguments)]
     fn add_constraint(
         &mut self,
@@ -426,6 +426,7 @@ impl PySystem {
         other: bool,
         other2: bool,
         reference: bool,
+        signed: bool,
         handle: Option<u32>,
     ) -> PyResult<u32> {
         let kind = constraint_kind(r#type)?;
@@ -443,6 +444,7 @@ impl PySystem {
         if reference {
             c = c.as_reference();
         }
+        c.signed = signed;
         self.push_constraint(c)
     }
 

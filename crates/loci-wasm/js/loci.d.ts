@@ -95,6 +95,8 @@ export interface ConstraintJson {
   other?: boolean;
   other2?: boolean;
   reference?: boolean;
+  /** An angle in a workplane whose `val` is signed, counter-clockwise from `entity_a` to `entity_b`. */
+  signed?: boolean;
 }
 
 /** Solver options of a solve. */

@@ -789,7 +789,7 @@ fn unknown_fields_are_errors_naming_the_object() {
             "constraint 3 (pt_pt_distance): unknown field \"ptb\" (did you mean \"pt_b\"?); a \
              constraint has \"h\", \"group\", \"type\", \"workplane\", \"val\", \"pt_a\", \
              \"pt_b\", \"entity_a\", \"entity_b\", \"entity_c\", \"entity_d\", \"other\", \
-             \"other2\" and \"reference\"",
+             \"other2\", \"reference\" and \"signed\"",
         ),
         (
             edit(TRIANGLE, "\"params\": [", "\"parms\": [], \"params\": [", 0),

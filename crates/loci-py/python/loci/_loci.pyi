@@ -163,6 +163,7 @@ class System:
         other: bool = False,
         other2: bool = False,
         reference: bool = False,
+        signed: bool = False,
         handle: Optional[int] = None,
     ) -> int: ...
     def remove_constraint(self, handle: int) -> bool: ...

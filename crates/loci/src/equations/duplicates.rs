@@ -21,6 +21,7 @@ struct Key {
     val: u64,
     other: bool,
     other2: bool,
+    signed: bool,
 }
 
 impl Key {
@@ -44,6 +45,7 @@ impl Key {
             val: (c.val + 0.0).to_bits(),
             other: c.other,
             other2: c.other2,
+            signed: c.signed,
         }
     }
 }
@@ -61,7 +63,7 @@ impl Key {
         self.pts.iter().for_each(|&p| add(id(p)));
         self.ents.iter().for_each(|&e| add(id(e)));
         add(self.val);
-        add(u64::from(self.other) | (u64::from(self.other2) << 1));
+        add(u64::from(self.other) | (u64::from(self.other2) << 1) | (u64::from(self.signed) << 2));
         h
     }
 }

@@ -113,18 +113,32 @@ pub(super) const COSINE_FORM: u8 = 2;
 /// degrees its gradient vanishes with the sine.
 pub(super) const COSINE_FORM_LIMIT: f64 = 0.99;
 
-/// The target angle in radians, with `other` meaning the supplement.
+/// The target angle in radians.
+///
+/// SolveSpace's angle (not [`Equation::signed`], and every angle in space) has only a size:
+/// `|val|` wrapped to [0, 180] degrees, or its supplement with `other`; in a workplane the
+/// branch ([`choose_angle`]) gives it the turning sense drawn at the start. Since a solved
+/// angle then turns the way its target does, solving again from the answer keeps it.
+///
+/// A signed angle in a workplane is `val` wrapped to (-180, 180], counter-clockwise from A to
+/// B; with `other` it is measured against B reversed, so the angle from A to B is `val` plus
+/// a half turn.
 pub(super) fn target(e: &Equation) -> f64 {
-    let t = e.val.to_radians();
-    if e.other {
-        std::f64::consts::PI - t
-    } else {
-        t
+    use std::f64::consts::{PI, TAU};
+    let wrap = |t: f64| t - TAU * (t / TAU).round();
+    let t = wrap(e.val.to_radians());
+    match (e.signed && e.wp.is_some(), e.other) {
+        (true, false) => t,
+        (true, true) => wrap(t + PI),
+        (false, false) => t.abs(),
+        (false, true) => PI - t.abs(),
     }
 }
 
+/// The branch of a 2D angle: 1 when its target turns clockwise, as the lines are drawn at the
+/// start (SolveSpace's angle); a signed angle has its sense in its value, and always 0.
 pub(super) fn choose_angle(e: &Equation, g: &Geo<f64>) -> u8 {
-    if e.wp.is_none() {
+    if e.wp.is_none() || e.signed {
         return 0;
     }
     let (a, b) = dirs(e, g, 0, 1);
@@ -134,7 +148,7 @@ pub(super) fn choose_angle(e: &Equation, g: &Geo<f64>) -> u8 {
 /// The angle between lines `entity_a` and `entity_b` is `val` degrees.
 ///
 /// In space this is SolveSpace's `cos(angle) = cos(val)`. In a workplane the angle from A to B
-/// keeps the sign it starts with, and the residual is `angle - val` wrapped to (-180, 180]
+/// is the signed [`target`] (with SolveSpace's angle, the sense it starts with), and the residual is `angle - val` wrapped to (-180, 180]
 /// degrees (in radians), computed with `atan2` from the sine and cosine of the difference.
 /// Unlike `cos(angle) - cos(val)` it stays well conditioned at 0 and 180 degrees; unlike
 /// `sin(angle - val)` it vanishes only at the target, not also at the target plus 180 degrees

@@ -63,6 +63,8 @@ pub(crate) struct Equation {
     pub val: f64,
     pub other: bool,
     pub other2: bool,
+    /// A 2D angle whose `val` is signed (see [`crate::model::Constraint::signed`]).
+    pub signed: bool,
     /// A branch chosen from the starting configuration (which components of a cross product to
     /// keep, which sign an angle has ...), so that the equations stay well conditioned.
     pub choice: u8,
@@ -90,6 +92,7 @@ impl Equation {
             val: c.val,
             other: c.other,
             other2: c.other2,
+            signed: c.signed,
             choice: 0,
             target: [0.0; 3],
             consts: Vec::new(),
@@ -107,6 +110,7 @@ impl Equation {
             val,
             other: false,
             other2: false,
+            signed: false,
             choice: 0,
             target,
             consts: Vec::new(),
@@ -250,8 +254,9 @@ impl Equation {
     /// Writes a 2D angle as SolveSpace does, `cos(angle) - cos(val)` (see
     /// [`crate::Config::solvespace_angles`]), where that form keeps its gradient; elsewhere
     /// the signed form, with its branch chosen at `x` (the equation's local values).
+    /// A signed angle keeps the signed form: the cosine holds at its mirror image too.
     pub fn write_angle_as_solvespace(&mut self, x: &[f64]) {
-        if !self.is_planar_angle() {
+        if !self.is_planar_angle() || self.signed {
             return;
         }
         if lines::target(self).cos().abs() <= lines::COSINE_FORM_LIMIT {

@@ -49,6 +49,12 @@ pub struct Constraint {
     /// A reference (driven) dimension: it only measures, and generates no equations.
     #[serde(default, skip_serializing_if = "is_false")]
     pub reference: bool,
+    /// For an `angle` in a workplane: `val` is the signed angle from `entity_a` to
+    /// `entity_b`, counter-clockwise positive, and the solve turns a line over to reach it.
+    /// Without it (SolveSpace's angle) only the size of `val` counts and the angle keeps the
+    /// turning sense it has where the solve starts. In space an angle has no sign.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub signed: bool,
 }
 
 fn is_zero(v: &f64) -> bool {
@@ -364,6 +370,7 @@ impl Constraint {
             other: false,
             other2: false,
             reference: false,
+            signed: false,
         }
     }
 
@@ -404,6 +411,14 @@ impl Constraint {
     pub fn with_flags(mut self, other: bool, other2: bool) -> Self {
         self.other = other;
         self.other2 = other2;
+        self
+    }
+
+    /// Makes an angle signed: `val` counter-clockwise from `entity_a` to `entity_b` in the
+    /// workplane, whichever way the lines turn at the start (see [`Constraint::signed`]).
+    #[must_use]
+    pub fn as_signed(mut self) -> Self {
+        self.signed = true;
         self
     }
 

@@ -20,8 +20,6 @@ pub(crate) struct Rec {
     pub params: Vec<ParamId>,
     /// Points held in place, with where.
     pub fixed: Vec<(PointId, [f64; 2])>,
-    /// Signed angles: the core constraint and the angle it must hold, counter-clockwise.
-    pub angles: Vec<(ConstraintId, f64)>,
     /// For a lock: the values it holds (length; or radius, start and end angles).
     pub locked: Vec<f64>,
 }
@@ -37,6 +35,7 @@ struct Core {
     val: f64,
     other: bool,
     other2: bool,
+    signed: bool,
 }
 
 fn core(kind: K) -> Core {
@@ -47,6 +46,7 @@ fn core(kind: K) -> Core {
         val: 0.0,
         other: false,
         other2: false,
+        signed: false,
     }
 }
 
@@ -61,6 +61,10 @@ impl Core {
     }
     fn val(mut self, v: f64) -> Self {
         self.val = v;
+        self
+    }
+    fn signed(mut self) -> Self {
+        self.signed = true;
         self
     }
 }
@@ -105,7 +109,6 @@ impl Sketch {
             entities: Vec::new(),
             params: Vec::new(),
             fixed: Vec::new(),
-            angles: Vec::new(),
             locked: Vec::new(),
         };
         if let Err(e) = self.write(&spec, &mut rec) {
@@ -209,11 +212,7 @@ impl Sketch {
         let val = core_value(&spec);
         let rec = self.constraints.get_mut(&id).expect("looked up above");
         rec.spec = spec;
-        if let Some(a) = rec.angles.first_mut() {
-            a.1 = v;
-            let c = a.0;
-            self.prepare_angle(c, v);
-        } else if let (Some(val), Some(c)) = (val, core.first()) {
+        if let (Some(val), Some(c)) = (val, core.first()) {
             if let Some(mut c) = self.sys.constraint_mut(*c) {
                 c.val = val;
             }
@@ -382,6 +381,7 @@ impl Sketch {
         con.entity_a = c.ents[0];
         con.entity_b = c.ents[1];
         con.reference = rec.reference;
+        con.signed = c.signed;
         let id = self.sys.add_constraint(con)?;
         rec.core.push(id);
         Ok(id)
@@ -395,8 +395,7 @@ impl Sketch {
         b: EntityId,
         deg: f64,
     ) -> Result<(), SketchError> {
-        let id = self.put(rec, core(K::Angle).ents(a, Some(b)).val(deg))?;
-        rec.angles.push((id, deg));
+        self.put(rec, core(K::Angle).ents(a, Some(b)).val(deg).signed())?;
         Ok(())
     }
 
@@ -650,60 +649,6 @@ impl Sketch {
         let e = Entity::line(h, Self::SHAPE_GROUP.0, Some(WORKPLANE.0), a.0 .0, b.0 .0);
         rec.entities.push(self.sys.add_entity(e)?);
         Ok(EntityId(h))
-    }
-
-    /// The coordinates of any 2D point entity of the system (shapes, hidden points, the axis).
-    pub(crate) fn entity_xy(&self, e: EntityId) -> [f64; 2] {
-        match self.sys.entity(e).map(|e| &e.kind) {
-            Some(crate::EntityKind::PointIn2d { params }) => {
-                params.map(|p| self.sys.value(p).unwrap_or(0.0))
-            }
-            _ => [0.0, 0.0],
-        }
-    }
-
-    /// The direction of a core line entity as the core's angle constraints read it.
-    fn core_dir(&self, line: EntityId) -> [f64; 2] {
-        match self.sys.entity(line).map(|e| &e.kind) {
-            Some(crate::EntityKind::LineSegment { points }) => {
-                let (p, q) = (self.entity_xy(points[0]), self.entity_xy(points[1]));
-                [p[0] - q[0], p[1] - q[1]]
-            }
-            _ => [1.0, 0.0],
-        }
-    }
-
-    /// Writes the value of a signed angle into its core constraint for the configuration the
-    /// solver is about to compile from. The core keeps the sign of a 2D angle that it finds
-    /// at that moment (its mirror never satisfies it afterwards); the value written is the one
-    /// that makes that kept sign the one asked for.
-    pub(crate) fn prepare_angle(&mut self, c: ConstraintId, deg: f64) {
-        let Some(con) = self.sys.constraint(c) else {
-            return;
-        };
-        let (Some(a), Some(b)) = (con.entity_a, con.entity_b) else {
-            return;
-        };
-        let (u, v) = (self.core_dir(a), self.core_dir(b));
-        let cross = u[0] * v[1] - u[1] * v[0];
-        let val = if cross < 0.0 { -deg } else { deg };
-        if let Some(mut m) = self.sys.constraint_mut(c) {
-            m.val = val;
-        }
-    }
-
-    /// Prepares every user signed angle and puts fixed points back where they were fixed:
-    /// what a solve that compiles the structure needs first.
-    pub(crate) fn prepare_user(&mut self) {
-        let angles: Vec<(ConstraintId, f64)> = self
-            .constraints
-            .values()
-            .flat_map(|r| r.angles.iter().copied())
-            .collect();
-        for (c, deg) in angles {
-            self.prepare_angle(c, deg);
-        }
-        self.restore_fixed();
     }
 
     /// Puts fixed points back where they were fixed (a value edit).

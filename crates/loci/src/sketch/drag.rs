@@ -348,15 +348,14 @@ impl Drag<'_> {
         }
         let compiling = self.compiled != Some(self.sketch.sys.revision());
         if compiling {
-            self.sketch.prepare_user();
+            self.sketch.restore_fixed();
         }
         for &(p, i, want) in &self.fixed {
             if self.sketch.sys.params()[i].val.to_bits() != want.to_bits() {
                 self.sketch.sys.set_value(p, want);
             }
         }
-        self.sketch
-            .write_soft(&mut self.soft, &soft_values, compiling);
+        self.sketch.write_soft(&self.soft, &soft_values);
         let report = self.solver.solve(&mut self.sketch.sys)?;
         self.compiled = Some(self.sketch.sys.revision());
         let flipped = report.outcome.is_ok() && self.flipped(&before);

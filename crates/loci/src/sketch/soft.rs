@@ -36,9 +36,6 @@ pub(crate) struct SoftRec {
     /// Positions in the parameter vector of the coordinates it reads: a line's ends, or an
     /// arc's centre and the end it keeps (the start for its radius), x then y.
     pub ix: [usize; 4],
-    /// For an angle: the sign the solver kept when it compiled (see
-    /// [`Sketch::prepare_angle`]).
-    pub sign: f64,
 }
 
 /// The result of a sketch solve.
@@ -170,7 +167,8 @@ impl Sketch {
                         kind: K::Angle,
                         entity_a: Some(X_AXIS),
                         entity_b: Some(spoke),
-                        val: v,
+                        val: wrap_deg(v),
+                        signed: true,
                         ..c
                     }
                 }
@@ -193,7 +191,6 @@ impl Sketch {
                         soft: s,
                         core,
                         ix: [a[0], a[1], b[0], b[1]],
-                        sign: 1.0,
                     });
                 }
                 Err(e) => {
@@ -227,27 +224,15 @@ impl Sketch {
             .collect()
     }
 
-    /// Writes soft values (value edits). `compiling`: the solver compiles next, from the
-    /// configuration as it is now, so angle signs are taken from it.
-    pub(crate) fn write_soft(&mut self, recs: &mut [SoftRec], values: &[f64], compiling: bool) {
-        for (r, &v) in recs.iter_mut().zip(values) {
+    /// Writes soft values (value edits).
+    pub(crate) fn write_soft(&mut self, recs: &[SoftRec], values: &[f64]) {
+        for (r, &v) in recs.iter().zip(values) {
             let val = match r.soft {
                 Soft::LineLength(_) => v,
                 Soft::ArcRadius(_) => 2.0 * v,
-                Soft::ArcStart(a) | Soft::ArcEnd(a) => {
-                    if compiling {
-                        let g = self.arc(a);
-                        let p = if matches!(r.soft, Soft::ArcStart(_)) {
-                            g.start
-                        } else {
-                            g.end
-                        };
-                        // The core's spoke runs centre minus point; the axis is (-1, 0).
-                        let cross = -(g.center[1] - p[1]);
-                        r.sign = if cross < 0.0 { -1.0 } else { 1.0 };
-                    }
-                    r.sign * wrap_deg(v)
-                }
+                // Both the axis and the spoke run backwards in the core (end to start, centre
+                // to point): the angle between them is the arc's own.
+                Soft::ArcStart(_) | Soft::ArcEnd(_) => wrap_deg(v),
             };
             // Most soft constraints of a drag keep their value from step to step: only
             // those that changed are written.
@@ -288,8 +273,8 @@ impl Sketch {
 
     fn solve_once(&mut self, soft: &mut [SoftRec]) -> Result<Report, SketchError> {
         let values = self.soft_values(soft);
-        self.prepare_user();
-        self.write_soft(soft, &values, true);
+        self.restore_fixed();
+        self.write_soft(soft, &values);
         Ok(crate::solve(
             &mut self.sys,
             Self::SHAPE_GROUP,

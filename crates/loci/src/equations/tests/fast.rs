@@ -165,19 +165,21 @@ proptest! {
     #[test]
     fn angle_matches_dual_numbers(
         p in proptest::collection::vec(coord(), 4),
-        deg in 0.0..180.0f64,
+        deg in -400.0..400.0f64,
         other: bool,
+        signed: bool,
         shared: bool,
         choice in 0u8..2,
     ) {
         let mut fx = Fx::new();
         let pts: Vec<u32> = p.iter().map(|&uv| fx.p2(MOVING, fx.wp, uv)).collect();
         let (l0, l1) = two_lines(&mut fx, &pts, shared);
-        let c = fx
+        let mut c = fx
             .con(K::Angle, Form::Plane)
             .with_entities([l0, l1, 0, 0])
             .with_val(deg)
             .with_flags(other, false);
+        c.signed = signed;
         assert_same(&fx, &c, choice);
     }
 

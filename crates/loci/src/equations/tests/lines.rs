@@ -191,6 +191,27 @@ fn angle(fx: &mut Fx, f: Form, other: bool) -> Built {
     }
 }
 
+/// A signed angle of -30 degrees (clockwise from A to B), or with `other` of 30 measured
+/// against B reversed (-150 from A to B); a value of 40 breaks either.
+fn signed_angle(fx: &mut Fx, f: Form, other: bool) -> Built {
+    let (val, between) = if other {
+        (30.0, -150.0)
+    } else {
+        (-30.0, -30.0)
+    };
+    let c = fx
+        .con(K::Angle, f)
+        .with_val(val)
+        .with_flags(other, false)
+        .as_signed();
+    let a = ray(fx, FIXED, f, [0.0, 0.0], 10.0);
+    let b = ray(fx, MOVING, f, [1.0, 2.0], 10.0 + between);
+    let c = c.with_entities([a, b, 0, 0]);
+    // Targets 40 and 220 (-140) degrees: off by -70 and -10.
+    let off: f64 = if other { -10.0 } else { -70.0 };
+    Built::new(c, Break::Val(40.0), Expect::Rows(vec![off.to_radians()]))
+}
+
 pub(super) fn cases() -> Vec<Case> {
     vec![
         Case {
@@ -325,6 +346,18 @@ pub(super) fn cases() -> Vec<Case> {
             kind: Some(K::Angle),
             forms: ALL,
             build: |fx, f| angle(fx, f, true),
+        },
+        Case {
+            name: "angle (signed)",
+            kind: Some(K::Angle),
+            forms: &[Plane, Mixed],
+            build: |fx, f| signed_angle(fx, f, false),
+        },
+        Case {
+            name: "angle (signed, supplementary)",
+            kind: Some(K::Angle),
+            forms: &[Plane, Mixed],
+            build: |fx, f| signed_angle(fx, f, true),
         },
         Case {
             name: "parallel",

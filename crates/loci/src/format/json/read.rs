@@ -907,7 +907,7 @@ pub(crate) fn entity_fields(t: EntityType) -> &'static [&'static str] {
 }
 
 /// The fields of a constraint.
-pub(crate) const CONSTRAINT_FIELDS: [&str; 14] = [
+pub(crate) const CONSTRAINT_FIELDS: [&str; 15] = [
     "h",
     "group",
     "type",
@@ -922,6 +922,7 @@ pub(crate) const CONSTRAINT_FIELDS: [&str; 14] = [
     "other",
     "other2",
     "reference",
+    "signed",
 ];
 
 const PARAM_FIELDS: [&str; 3] = ["h", "group", "val"];
@@ -1201,6 +1202,7 @@ fn constraint(o: &mut Obj<'_>) -> Result<(Constraint, u32), JsonError> {
     c.other = o.value("other", bool_value)?.unwrap_or_default();
     c.other2 = o.value("other2", bool_value)?.unwrap_or_default();
     c.reference = o.value("reference", bool_value)?.unwrap_or_default();
+    c.signed = o.value("signed", bool_value)?.unwrap_or_default();
     o.finish(&[&CONSTRAINT_FIELDS], || {
         ("a constraint".into(), Vec::new())
     })?;
@@ -1361,6 +1363,7 @@ mod tests {
         c.other = true;
         c.other2 = true;
         c.reference = true;
+        c.signed = true;
         let v = serde_json::to_value(&c).unwrap();
         assert_eq!(keys(&v), sorted(&CONSTRAINT_FIELDS));
         let v = serde_json::to_value(Param::new(1, 2, 3.0)).unwrap();

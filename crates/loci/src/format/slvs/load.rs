@@ -1003,6 +1003,8 @@ impl<'a> Builder<'a> {
                 other: r.flag("Constraint.other"),
                 other2: r.flag("Constraint.other2"),
                 reference,
+                // SolveSpace's angle has a size only.
+                signed: false,
             };
             self.sys.add_constraint(c).map_err(|e| SlvsError::Model {
                 line: r.line_of("Constraint.valA"),
