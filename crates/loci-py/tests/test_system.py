@@ -124,6 +124,27 @@ def test_generic_entities_and_constraints_by_code() -> None:
     assert s.groups == [1, 2]
 
 
+def test_signed_angle_turns_a_line_over_and_solvespace_angle_keeps_its_turn() -> None:
+    # Line A along +x (group 1), line B from the origin drawn 25 degrees counter-clockwise.
+    for signed, want in [(False, 30.0), (True, -30.0)]:
+        s = loci.System()
+        wp = s.add_xy_workplane(group=1)
+        o = s.add_point_2d(0.0, 0.0, workplane=wp, group=1)
+        a = s.add_line(o, s.add_point_2d(4.0, 0.0, workplane=wp, group=1), workplane=wp, group=1)
+        b_end = s.add_point_2d(2.5, 1.2, workplane=wp, group=2)
+        b = s.add_line(o, b_end, workplane=wp, group=2)
+        s.add_constraint("angle", group=2, workplane=wp, entity_a=a, entity_b=b, value=-30.0,
+                         signed=signed)
+        s.add_constraint("pt_pt_distance", group=2, workplane=wp, pt_a=o, pt_b=b_end, value=3.0)
+        assert s.solve(2).ok
+        u, v = xy(s, b_end)
+        assert math.degrees(math.atan2(v, u)) == pytest.approx(want, abs=1e-6)
+        assert s.constraints[0].get("signed", False) == signed
+        # Solved again from its answer, nothing moves.
+        again = s.solve(2)
+        assert again.ok and again.iterations == 0
+
+
 def test_numpy_bulk_values_100k() -> None:
     s = loci.System()
     n = 100_000
