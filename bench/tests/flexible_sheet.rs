@@ -1,7 +1,8 @@
 //! A sheet of closed profiles large enough that each of its columns, a chain of 190 edges held
 //! by lengths and relative angles, bends more easily than the rank tolerance tells from a
 //! dependency: the smallest squared singular value of its Jacobian falls under 1e-10. Built
-//! from a solution, it must solve, fully constrained, rather than be reported inconsistent.
+//! from a solution, it must solve, fully constrained, rather than be reported inconsistent;
+//! solved again from its answer, it must stay fully constrained, with nothing named.
 
 use loci::{Config, Outcome};
 use loci_bench::generate::generate;
@@ -26,6 +27,18 @@ fn a_190x190_sheet_of_profiles_solves_with_no_freedom_left() {
     assert!(r.failed.is_empty());
     assert!(r.residual <= 1e-10, "{}", r.residual);
     assert!(r.iterations <= 10, "{}", r.iterations);
+    // From the answer, where every row holds (the marginal one too), the rank is read as
+    // before: it was `redundant_okay` with 1 DOF and two distances named.
+    let again = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    assert_eq!(
+        (
+            again.outcome,
+            again.dof,
+            again.failed.len(),
+            again.iterations
+        ),
+        (Outcome::Okay, 0, 0, 0)
+    );
 }
 
 #[test]
@@ -46,4 +59,10 @@ fn the_same_sheet_with_one_redundant_constraint_solves_and_names_it() {
     assert!(r.residual <= 1e-10, "{}", r.residual);
     let extra = sp.system.constraints().last().expect("constraints").h;
     assert!(r.failed.contains(&extra), "{:?}", r.failed);
+    let again = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    assert_eq!(
+        (again.outcome, again.dof, again.iterations),
+        (Outcome::RedundantOkay, 0, 0)
+    );
+    assert_eq!(again.failed, r.failed);
 }
