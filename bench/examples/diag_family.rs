@@ -53,6 +53,14 @@ fn main() {
     }
     if a.iter().any(|x| x == "--diagnose") {
         let d = sp.system.diagnose(SOLVE_GROUP).expect("diagnoses");
-        println!("diagnosis: {} conflicting {:?}", d.outcome, d.conflicting);
+        println!(
+            "diagnosis: {} dof {} rank {} of {}, conflicting {:?}, redundant sets of {:?} constraints",
+            d.outcome,
+            d.dof,
+            d.rank,
+            d.equations,
+            d.conflicting,
+            d.redundant.iter().map(|s| s.members.len()).collect::<Vec<_>>()
+        );
     }
 }

@@ -66,3 +66,31 @@ fn the_same_sheet_with_one_redundant_constraint_solves_and_names_it() {
     );
     assert_eq!(again.failed, r.failed);
 }
+
+/// At 200x200 the marginal pivot is smaller still: the diagnosis read the solvable sheet with
+/// 1 DOF and a redundant set of 54,651 constraints, and the redundant sheet's solve named 128
+/// constraints (its coefficients, solved with the nearly singular kept rows, spread over a
+/// whole column) for the 7 that close a cell with the extra distance.
+#[test]
+fn at_200x200_the_diagnosis_and_the_named_constraints_are_those_of_smaller_sheets() {
+    let p = generate(Family::Profiles, Variant::Solvable, 200);
+    let sys = slvs::build(&p).expect("translates").system;
+    let d = sys.diagnose(SOLVE_GROUP).expect("diagnoses");
+    assert_eq!(
+        (d.outcome, d.dof, d.redundant.len()),
+        (Outcome::Okay, 0, 0),
+        "{:?}",
+        d.redundant
+            .iter()
+            .map(|s| s.members.len())
+            .collect::<Vec<_>>()
+    );
+
+    let p = generate(Family::Profiles, Variant::Redundant, 200);
+    let mut sys = slvs::build(&p).expect("translates").system;
+    let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    assert_eq!((r.outcome, r.dof), (Outcome::RedundantOkay, 0));
+    let extra = sys.constraints().last().expect("constraints").h;
+    assert!(r.failed.contains(&extra), "{:?}", r.failed);
+    assert_eq!(r.failed.len(), 7, "{:?}", r.failed);
+}

@@ -29,6 +29,9 @@ pub(crate) struct Rank {
     pub gram: Gram,
     /// Rows dropped as dependent, ascending.
     pub dropped: Vec<usize>,
+    /// The rank tolerance it was read at: the configuration's, or the tighter one the solver
+    /// reads a large structure that bends easily at ([`rank::marginal`]).
+    pub tolerance: f64,
 }
 
 impl Rank {
@@ -40,22 +43,31 @@ impl Rank {
         let columns = Columns::from_lists(&eqs.columns);
         let mut gram = Gram::new(eqs.rows, &columns)?;
         gram.assemble(&lin.jn);
-        if !gram.factor(0.0, cfg.rank_tolerance) {
+        let mut tolerance = cfg.rank_tolerance;
+        if !gram.factor(0.0, tolerance) {
             return None;
+        }
+        let first = gram.dropped();
+        if let Some(tight) = rank::marginal(&mut gram, eqs.rows, columns.len(), tolerance, &first) {
+            tolerance = tight;
         }
         // At a solution the rank is checked where rounding could hide a dependence, as the
         // solver checks it; where the solve stopped short, near-dependence is the conflict
         // itself and is left to the circuits and their verification, only the count checked
         // as the solver checks it.
         let dropped = if lin.r.iter().all(|v| v.abs() <= cfg.tolerance) {
-            rank::reveal(&mut gram, &columns, &lin.jn, cfg.rank_tolerance)
+            rank::reveal(&mut gram, &columns, &lin.jn, tolerance)
         } else {
             let mut k = rank::counts_by_unknowns(eqs.rows, columns.len())
                 .then(|| Gram::of_unknowns(eqs.rows, &columns))
                 .flatten();
-            rank::short_of_solution(&mut gram, k.as_mut(), &columns, &lin.jn, cfg.rank_tolerance)
+            rank::short_of_solution(&mut gram, k.as_mut(), &columns, &lin.jn, tolerance)
         };
-        Some(Self { gram, dropped })
+        Some(Self {
+            gram,
+            dropped,
+            tolerance,
+        })
     }
 
     /// The rank of the equations.

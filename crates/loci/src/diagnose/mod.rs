@@ -85,7 +85,8 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
     if ran_off(&eqs, &start, report.residual) {
         conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
     }
-    let mut redundant = redundant::redundant_sets(&eqs, &lin, &circuits, cfg.rank_tolerance);
+    let tolerance = rank.as_ref().map_or(cfg.rank_tolerance, |r| r.tolerance);
+    let mut redundant = redundant::redundant_sets(&eqs, &lin, &circuits, tolerance);
     // Constraints written more than once never reach the equations: each copy is redundant.
     for (first, copies) in crate::equations::duplicate_groups(sys, group) {
         let mut members: Vec<Member> = std::iter::once(first)

@@ -148,18 +148,6 @@ fn settles_above(history: &[f64]) -> bool {
     rate < 1.0 && d3 * rate / (1.0 - rate) < SETTLE * d
 }
 
-/// Rows dropped by the first factorisation of a large component that a factorisation at this
-/// fraction of the rank tolerance keeps are only just dependent there (see
-/// [`Component::solve`]), where at most [`MARGINAL_DEPENDENT`] rows depend on the others.
-const MARGINAL: f64 = 1e-3;
-
-/// The most rows the tighter factorisation of [`MARGINAL`] may still drop (and by which
-/// equations may outnumber unknowns), a few redundant constraints. Where thousands of rows
-/// depend on others, the rounding of their eliminations lands pivots near the rank tolerance
-/// too: a 70x70 mesh with 4,624 dependent rows, solved at the tighter tolerance, was read
-/// with 0 DOF instead of 1. The test costs one factorisation, in the solves where it applies.
-const MARGINAL_DEPENDENT: usize = 8;
-
 /// The largest damping at which a crawl (see [`CRAWL`]) reads as a least-squares point: with
 /// more, short steps are the damping's, not the problem's.
 const CRAWL_DAMPING: f64 = 1e-4;
@@ -690,9 +678,9 @@ impl Component {
     /// Solves from `x` in place.
     ///
     /// A large component whose first factorisation drops rows, some of which a factorisation
-    /// at [`MARGINAL`] times the rank tolerance keeps, is solved at that tighter tolerance
-    /// throughout, its rank included, where only a few rows depend on others
-    /// ([`MARGINAL_DEPENDENT`]). Such a row is no dependency but a structure that bends
+    /// at [`rank::MARGINAL`] times the rank tolerance keeps, is solved at that tighter
+    /// tolerance throughout, its rank included, where only a few rows depend on others
+    /// ([`rank::marginal`]). Such a row is no dependency but a structure that bends
     /// easily: each column of a 190x190 sheet of profiles is a chain of 190 edges held by
     /// relative angles, whose smallest squared singular value falls under the rank tolerance
     /// (1e-10) at that size. Dropped, the row was left out of every plain step, the steps
@@ -714,7 +702,7 @@ impl Component {
             return fin;
         }
         let tight = Config {
-            rank_tolerance: cfg.rank_tolerance * MARGINAL,
+            rank_tolerance: cfg.rank_tolerance * rank::MARGINAL,
             ..cfg.clone()
         };
         self.solve_at(kernels, x, values, &tight, scratch, false)
@@ -864,22 +852,10 @@ impl Component {
                 && before == 0
                 && nudges == 0
                 && factored
-                && m >= STUCK_SIZE
-                && m <= ncols + MARGINAL_DEPENDENT
-                && !left_out.is_empty()
+                && rank::marginal(gram, m, ncols, cfg.rank_tolerance, &left_out).is_some()
             {
-                let ok = gram.factor(0.0, cfg.rank_tolerance * MARGINAL);
-                let tighter = if ok { gram.dropped() } else { Vec::new() };
-                if ok && tighter.len() < left_out.len() && tighter.len() <= MARGINAL_DEPENDENT {
-                    self.gram = gram_slot;
-                    return Finish::without_steps(false, true);
-                }
-                // The same rows dropped (the tighter drops a subset) is the same
-                // factorisation; a failed one is redone.
-                if !ok {
-                    factored = gram.factor(0.0, cfg.rank_tolerance);
-                    left_out = gram.dropped();
-                }
+                self.gram = gram_slot;
+                return Finish::without_steps(false, true);
             }
             if iterations == 0 && cfg.nearest && factored {
                 fold = cfg.fold_slide && m - gram.dropped().len() < ncols;

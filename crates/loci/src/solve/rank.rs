@@ -387,6 +387,57 @@ fn row_entries(columns: &Columns, rows: &[usize], m: usize) -> Vec<Vec<(usize, u
     entries
 }
 
+/// Rows dropped by a factorisation of a large component that a factorisation at this fraction
+/// of the rank tolerance keeps are only just dependent there (see [`marginal`]).
+pub(crate) const MARGINAL: f64 = 1e-3;
+
+/// The most rows the tighter factorisation of [`MARGINAL`] may still drop (and by which
+/// equations may outnumber unknowns), a few redundant constraints. Where thousands of rows
+/// depend on others, the rounding of their eliminations lands pivots near the rank tolerance
+/// too: a 70x70 mesh with 4,624 dependent rows, solved at the tighter tolerance, was read
+/// with 0 DOF instead of 1.
+const MARGINAL_DEPENDENT: usize = 8;
+
+/// Components from this many rows on are tested by [`marginal`]; the test costs one
+/// factorisation.
+const MARGINAL_SIZE: usize = 4096;
+
+/// The tighter rank tolerance `tol * MARGINAL` where the rank of a large component is to be read
+/// there: `gram`, of `m` rows over `ncols` unknowns, factorised at `tol`, dropped the rows
+/// `dropped`, some of which a factorisation at the tighter tolerance keeps, and that one drops
+/// at most [`MARGINAL_DEPENDENT`]. `gram` is then left factorised at the tighter tolerance;
+/// otherwise (`None`) at `tol`, as it was.
+///
+/// Such a row is no dependency but a structure that bends easily: each column of a 190x190
+/// sheet of profiles is a chain of 190 edges held by relative angles, whose smallest squared
+/// singular value falls under the rank tolerance (1e-10) at that size. Read at the usual
+/// tolerance, the solve left that row out of its steps and folded the sheet, and at a solution
+/// the sheet was read with 1 DOF and its constraints named redundant.
+pub(crate) fn marginal(
+    gram: &mut Gram,
+    m: usize,
+    ncols: usize,
+    tol: f64,
+    dropped: &[usize],
+) -> Option<f64> {
+    if m < MARGINAL_SIZE || m > ncols + MARGINAL_DEPENDENT || dropped.is_empty() {
+        return None;
+    }
+    let tight = tol * MARGINAL;
+    if gram.factor(0.0, tight) {
+        let kept = gram.dropped();
+        if kept.len() < dropped.len() && kept.len() <= MARGINAL_DEPENDENT {
+            return Some(tight);
+        }
+        if kept.len() == dropped.len() {
+            // The same rows dropped (the tighter drops a subset): the same factorisation.
+            return None;
+        }
+    }
+    gram.factor(0.0, tol);
+    None
+}
+
 /// How many dependency right-hand sides are solved together.
 pub(crate) const DEPENDENCY_BLOCK: usize = 32;
 
@@ -416,6 +467,15 @@ pub(crate) fn dependencies(
             gram_column(columns, jn, &entries[block * DEPENDENCY_BLOCK + t], rhs);
         }
         gram.solve_many(&mut b, ks.len());
+        if gram.smallest_kept_pivot() <= REFINE_BELOW {
+            let mut v = vec![0.0; columns.len() * ks.len()];
+            for (t, vt) in v.chunks_mut(columns.len().max(1)).enumerate() {
+                for &(c, ik) in &entries[block * DEPENDENCY_BLOCK + t] {
+                    vt[c] += jn[ik as usize];
+                }
+            }
+            refine(gram, columns, jn, dropped, &v, &mut b, m);
+        }
         for (&k, c) in ks.iter().zip(b.chunks(m.max(1))) {
             let mut deps = vec![k];
             deps.extend(
@@ -429,6 +489,66 @@ pub(crate) fn dependencies(
         }
     }
     out
+}
+
+/// Kept pivots up to this make [`dependencies`] refine the coefficients it solved for. The
+/// normal equations square the conditioning of the kept rows: rounding in the coefficients is
+/// about 1e-16 over the smallest kept pivot, and from about 1e-10 down it reaches the 1e-6 by
+/// which a row is read as part of a dependency. A 200x200 sheet of profiles, solved at a
+/// tightened rank tolerance (see `newton::MARGINAL`) with a kept pivot near 5e-11, named 128
+/// constraints redundant for the 7 that close a cell with the extra one.
+const REFINE_BELOW: f64 = 1e-6;
+
+/// One step of iterative refinement of the coefficients `b` (one column of `m` per
+/// right-hand side, solved with `gram`'s factors, `dropped` its dropped rows) of right-hand
+/// sides `J v` (the `v` one after another, each as long as `J` has columns): what `Jᵀ c`
+/// misses of `v` is taken back to the rows, and the correction solved for with the same
+/// factors (the corrected semi-normal equations), which takes the rounding to about its
+/// square.
+fn refine(
+    gram: &mut Gram,
+    columns: &Columns,
+    jn: &[f64],
+    dropped: &[usize],
+    vs: &[f64],
+    b: &mut [f64],
+    m: usize,
+) {
+    let n = columns.len();
+    let k = b.len() / m.max(1);
+    let mut d = vec![0.0; m * k];
+    for ((c, v), dj) in b
+        .chunks_mut(m.max(1))
+        .zip(vs.chunks(n.max(1)))
+        .zip(d.chunks_mut(m.max(1)))
+    {
+        for &r in dropped {
+            c[r] = 0.0;
+        }
+        // dj = J (v - Jᵀ c), column by column.
+        for (col, &vc) in columns.iter().zip(v) {
+            let jtc: f64 = col
+                .iter()
+                .map(|&(row, idx)| jn[idx as usize] * c[row as usize])
+                .sum();
+            let miss = vc - jtc;
+            if miss != 0.0 {
+                for &(row, idx) in col {
+                    dj[row as usize] += jn[idx as usize] * miss;
+                }
+            }
+        }
+        for &r in dropped {
+            dj[r] = 0.0;
+        }
+    }
+    gram.solve_many(&mut d, k);
+    for (c, dj) in b.chunks_mut(m.max(1)).zip(d.chunks(m.max(1))) {
+        c.iter_mut().zip(dj).for_each(|(a, x)| *a += x);
+        for &r in dropped {
+            c[r] = 0.0;
+        }
+    }
 }
 
 /// How many random combinations of the dropped rows [`dependent_union`] solves for.
@@ -449,10 +569,15 @@ fn dependent_union(
     dropped: &[usize],
     m: usize,
 ) -> Vec<usize> {
+    let n = columns.len();
     let mut b = vec![0.0; m * UNION_PROBES];
-    for (p, rhs) in b.chunks_mut(m.max(1)).enumerate() {
+    let mut vs = vec![0.0; n * UNION_PROBES];
+    for (p, (rhs, v)) in b
+        .chunks_mut(m.max(1))
+        .zip(vs.chunks_mut(n.max(1)))
+        .enumerate()
+    {
         // v = Σ w_k J_kᵀ over the columns, then rhs = J v.
-        let mut v = vec![0.0; columns.len()];
         for (s, &k) in dropped.iter().enumerate() {
             let w = generic(k, p);
             for &(c, ik) in &entries[s] {
@@ -468,6 +593,9 @@ fn dependent_union(
         }
     }
     gram.solve_many(&mut b, UNION_PROBES);
+    if gram.smallest_kept_pivot() <= REFINE_BELOW {
+        refine(gram, columns, jn, dropped, &vs, &mut b, m);
+    }
     let mut on_circuit = vec![false; m];
     for &k in dropped {
         on_circuit[k] = true;
