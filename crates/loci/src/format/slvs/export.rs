@@ -21,8 +21,9 @@
 //! the coordinates of datum points of their group, so their values survive but nothing ties
 //! them; faces (SolveSpace makes them only for solids), so `pt_on_face` and
 //! `pt_face_distance` are written as `pt_in_plane` and `pt_plane_distance`, whose equations
-//! are the same; and the choice of branch `same_orientation` makes, which allows quarter
-//! turns.
+//! are the same; the choice of branch `same_orientation` makes, which allows quarter
+//! turns; and the sign of a `signed` angle: SolveSpace's angle has a size only, and keeps
+//! the turn the lines have in the file (the one a solved signed angle has).
 
 use super::codes::GroupKind;
 use super::records::MAGIC;
