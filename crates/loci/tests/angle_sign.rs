@@ -129,6 +129,37 @@ fn signed_and_unsigned_angles_on_the_same_lines_are_not_duplicates() {
 }
 
 #[test]
+fn a_signed_reference_angle_measures_with_its_sign() {
+    // B solved at -30 degrees (clockwise from A); references on the same lines read it.
+    let (mut s, _) = two_lines(25.0, |c| c.with_val(-30.0).as_signed());
+    let reference = |s: &mut Sketch, other: bool, signed: bool| {
+        let mut c = Constraint::new(0, 2, K::Angle)
+            .with_entities([401, 402, 0, 0])
+            .with_flags(other, false)
+            .as_reference();
+        c.signed = signed;
+        s.constrain(c)
+    };
+    let plain = reference(&mut s, false, true);
+    let reversed = reference(&mut s, true, true);
+    let size = reference(&mut s, false, false);
+    let supplement = reference(&mut s, true, false);
+    assert!(s.sys.solve_group(2).unwrap().outcome.is_ok());
+    let d = s.sys.diagnose(2).unwrap();
+    let read = |h: u32| {
+        d.measurements
+            .iter()
+            .find(|m| m.constraint.0 == h)
+            .map(|m| m.value)
+            .unwrap()
+    };
+    near(read(plain), -30.0);
+    near(read(reversed), 150.0);
+    near(read(size), 30.0);
+    near(read(supplement), 150.0);
+}
+
+#[test]
 fn signed_is_read_and_written_by_the_json_format() {
     let (s, _) = two_lines(25.0, |c| c.with_val(-30.0).as_signed());
     let text = Problem {

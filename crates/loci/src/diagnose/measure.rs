@@ -57,8 +57,23 @@ fn residual(k: &Kernel, xs: &[f64], val: f64, other: bool) -> f64 {
 
 /// The angle in degrees between the two lines, as `val` means it (the supplement with
 /// `other`). In space the residual at 90 degrees is the cosine; in a workplane the residual
-/// at 0 degrees is the signed angle itself (in radians, wrapped to (-180, 180] degrees).
+/// at 0 degrees is the signed angle itself (in radians, wrapped to (-180, 180] degrees). A
+/// signed angle is measured with its sign, counter-clockwise from A to B (with `other`, to B
+/// reversed); SolveSpace's by its size.
 fn angle(k: &Kernel, xs: &[f64]) -> f64 {
+    if k.eq.wp.is_some() && k.eq.signed {
+        let theta = residual(k, xs, 0.0, false).to_degrees();
+        return if k.eq.other {
+            // To B reversed: half a turn off, back into (-180, 180].
+            if theta > 0.0 {
+                theta - 180.0
+            } else {
+                theta + 180.0
+            }
+        } else {
+            theta
+        };
+    }
     let theta = match k.eq.wp {
         None => {
             let c = residual(k, xs, 90.0, false) + 90f64.to_radians().cos();
