@@ -67,6 +67,11 @@ pub struct Config {
     /// solve whose failure is followed by another solve of the same request, written
     /// differently, that does all of it.
     pub(crate) name_conflicts: bool,
+    /// Whether damped steps creeping towards a least-squares point above zero may stop once
+    /// what is left to gain at their rate is small (see `newton::settles_above`). Off for the
+    /// second solve of a failure whose stop showed no conflict: the rows of a conflict may
+    /// become dependent only at the least-squares point itself.
+    pub(crate) settle: bool,
 }
 
 impl Default for Config {
@@ -84,6 +89,7 @@ impl Default for Config {
             reuse_factor: true,
             unknowns_side: true,
             name_conflicts: true,
+            settle: true,
         }
     }
 }

@@ -1107,7 +1107,8 @@ impl Component {
                 // crept from 0.1473 to 0.1469 over 50 iterations, and went on to 1,000).
                 break;
             }
-            if damped_dependent
+            if cfg.settle
+                && damped_dependent
                 && damping.is_some_and(|d| d <= CRAWL_DAMPING)
                 && iterations >= damped_from + SETTLE_PATIENCE
                 && max_r > SETTLE_RESIDUAL * cfg.tolerance
