@@ -150,6 +150,9 @@ struct Cache {
     components: Vec<Component>,
     /// Newton's work vectors, kept for the next solve on this thread.
     scratch: newton::Scratch,
+    /// Whether, in the last solve, damped steps of some component stopped short of the
+    /// least-squares point they were creeping towards ([`Config::settle`]).
+    settled: bool,
 }
 
 /// A reusable solver for one group: the first solve compiles the equations, splits them into
@@ -238,7 +241,7 @@ fn solve_cached(
         // their rate was small (`Config::settle`); where nothing was shown from there, they
         // creep on to it and the search runs again. Three of 5,000 random systems against
         // SolveSpace were named from the point itself and not from the early stop.
-        if !proven && cfg.settle {
+        if !proven && cfg.settle && plain.as_ref().unwrap_or(cache).settled {
             let full = Config {
                 settle: false,
                 ..cfg.clone()
@@ -463,6 +466,7 @@ fn solve_values(
             .map(|(comp, x)| comp.solve(kernels, x, &values, cfg, scratch))
             .collect()
     };
+    cache.settled = finishes.iter().any(|f| f.settled);
     if let Some(ci) = finishes.iter().position(|f| f.too_large) {
         let comp = &cache.components[ci];
         return Err(SolveError::TooLarge {

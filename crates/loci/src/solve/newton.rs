@@ -59,8 +59,11 @@ pub(crate) struct Finish {
     /// attempted.
     pub too_large: bool,
     /// Stopped before its first step: a row the first factorisation dropped was only just
-    /// dependent (see [`MARGINAL`]); to be solved again at the tighter rank tolerance.
+    /// dependent (see [`rank::marginal`]); to be solved again at the tighter rank tolerance.
     pub marginal: bool,
+    /// Damped steps stopped short of the least-squares point they were creeping towards
+    /// ([`settles_above`], [`Config::settle`]).
+    pub settled: bool,
 }
 
 impl Finish {
@@ -77,6 +80,7 @@ impl Finish {
             residual: f64::NAN,
             too_large,
             marginal,
+            settled: false,
         }
     }
 }
@@ -817,6 +821,8 @@ impl Component {
         let mut settled = false;
         // Whether `keep` holds a solution.
         let mut held = false;
+        // Whether `settles_above` ended the damped steps.
+        let mut stopped_settling = false;
         // Whether the factorisation is of an earlier iteration's `G` (see `REUSE_MOVE`); the
         // rows the last fresh one dropped; the largest relative move of the last step.
         let (mut stale, mut last_move) = (false, f64::INFINITY);
@@ -1114,6 +1120,7 @@ impl Component {
                 && max_r > SETTLE_RESIDUAL * cfg.tolerance
                 && settles_above(&history)
             {
+                stopped_settling = true;
                 break;
             }
             if sliding && holds {
@@ -1317,6 +1324,7 @@ impl Component {
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
             too_large: false,
             marginal: false,
+            settled: stopped_settling,
         };
         self.gram = gram_slot;
         // `K`'s structure, shared with the steps through it, counts the free directions

@@ -445,6 +445,7 @@ impl Component {
             residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
             too_large: false,
             marginal: false,
+            settled: false,
         })
     }
 }
