@@ -247,12 +247,10 @@ fn solve_cached(
                 ..cfg.clone()
             };
             let (mut again, at, plain) = solve_values_checked(sys, group, dragged, &full, cache)?;
-            if matches!(
-                again.outcome,
-                Outcome::Inconsistent | Outcome::DidNotConverge
-            ) {
+            // A crawl that went on to a solution after all is the answer too.
+            let settled = again.outcome.is_ok() || {
                 let used = plain.as_ref().unwrap_or(cache);
-                if crate::diagnose::name_conflicts(
+                crate::diagnose::name_conflicts(
                     sys,
                     group,
                     &at,
@@ -260,9 +258,10 @@ fn solve_cached(
                     &mut again,
                     &used.kernels,
                     &used.links,
-                ) {
-                    (report, values, proven) = (again, at, true);
-                }
+                )
+            };
+            if settled {
+                (report, values, proven) = (again, at, true);
             }
         }
         // Nothing shown to fail on its own: Newton from the whole drawing may have folded the
