@@ -4,17 +4,28 @@
 //! from a solution, it must solve, fully constrained, rather than be reported inconsistent;
 //! solved again from its answer, it must stay fully constrained, with nothing named.
 
-use loci::{Config, Outcome};
+use loci::{Config, Outcome, Report, System};
 use loci_bench::generate::generate;
 use loci_bench::problem::{Family, Variant};
 use loci_bench::slvs::{self, SOLVE_GROUP};
 
+/// The benchmark's `n` x `n` sheet of profiles of `variant`, in the SolveSpace model.
+fn sheet(variant: Variant, n: usize) -> System {
+    let p = generate(Family::Profiles, variant, n);
+    slvs::build(&p)
+        .expect("translates to the SolveSpace model")
+        .system
+}
+
+/// Solves the sheet's group in place with the default configuration.
+fn solve(sys: &mut System) -> Report {
+    loci::solve(sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves")
+}
+
 #[test]
 fn a_190x190_sheet_of_profiles_solves_with_no_freedom_left() {
-    let p = generate(Family::Profiles, Variant::Solvable, 190);
-    let sp = slvs::build(&p).expect("translates to the SolveSpace model");
-    let mut sys = sp.system.clone();
-    let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    let mut sys = sheet(Variant::Solvable, 190);
+    let r = solve(&mut sys);
     // It was `did_not_converge` with 192,902 constraints named (and sizes 199 to 210
     // `inconsistent`): the row dropped at the start was left out of every plain step.
     assert_eq!(
@@ -29,7 +40,7 @@ fn a_190x190_sheet_of_profiles_solves_with_no_freedom_left() {
     assert!(r.iterations <= 10, "{}", r.iterations);
     // From the answer, where every row holds (the marginal one too), the rank is read as
     // before: it was `redundant_okay` with 1 DOF and two distances named.
-    let again = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    let again = solve(&mut sys);
     assert_eq!(
         (
             again.outcome,
@@ -43,10 +54,8 @@ fn a_190x190_sheet_of_profiles_solves_with_no_freedom_left() {
 
 #[test]
 fn the_same_sheet_with_one_redundant_constraint_solves_and_names_it() {
-    let p = generate(Family::Profiles, Variant::Redundant, 190);
-    let sp = slvs::build(&p).expect("translates to the SolveSpace model");
-    let mut sys = sp.system.clone();
-    let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    let mut sys = sheet(Variant::Redundant, 190);
+    let r = solve(&mut sys);
     // One row depends on the others for certain, and one only just: the rank tolerance is
     // tightened where no more than a few rows depend on the others.
     assert_eq!(
@@ -57,9 +66,9 @@ fn the_same_sheet_with_one_redundant_constraint_solves_and_names_it() {
     );
     assert_eq!(r.dof, 0);
     assert!(r.residual <= 1e-10, "{}", r.residual);
-    let extra = sp.system.constraints().last().expect("constraints").h;
+    let extra = sys.constraints().last().expect("constraints").h;
     assert!(r.failed.contains(&extra), "{:?}", r.failed);
-    let again = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    let again = solve(&mut sys);
     assert_eq!(
         (again.outcome, again.dof, again.iterations),
         (Outcome::RedundantOkay, 0, 0)
@@ -73,8 +82,7 @@ fn the_same_sheet_with_one_redundant_constraint_solves_and_names_it() {
 /// whole column) for the 7 that close a cell with the extra distance.
 #[test]
 fn at_200x200_the_diagnosis_and_the_named_constraints_are_those_of_smaller_sheets() {
-    let p = generate(Family::Profiles, Variant::Solvable, 200);
-    let sys = slvs::build(&p).expect("translates").system;
+    let sys = sheet(Variant::Solvable, 200);
     let d = sys.diagnose(SOLVE_GROUP).expect("diagnoses");
     assert_eq!(
         (d.outcome, d.dof, d.redundant.len()),
@@ -86,9 +94,8 @@ fn at_200x200_the_diagnosis_and_the_named_constraints_are_those_of_smaller_sheet
             .collect::<Vec<_>>()
     );
 
-    let p = generate(Family::Profiles, Variant::Redundant, 200);
-    let mut sys = slvs::build(&p).expect("translates").system;
-    let r = loci::solve(&mut sys, SOLVE_GROUP.into(), &[], &Config::default()).expect("solves");
+    let mut sys = sheet(Variant::Redundant, 200);
+    let r = solve(&mut sys);
     assert_eq!((r.outcome, r.dof), (Outcome::RedundantOkay, 0));
     let extra = sys.constraints().last().expect("constraints").h;
     assert!(r.failed.contains(&extra), "{:?}", r.failed);
