@@ -520,3 +520,74 @@ proptest! {
         }
     }
 }
+
+/// Points 1 = 2 and 2 = 3 and 1.2 between points 1 and 3, beside a cycle of three equal
+/// lengths (one of them redundant), one line ending on point 2. The coincidences merge the
+/// three points, so where the solve stops the distance has no direction and stood alone as its
+/// own circuit, which holds alone: `did_not_converge`, nothing named (a random 3D sketch
+/// against SolveSpace, which names the distance). Off that point its row lies in the span of
+/// the coincidences', and the three are named, in 2D and in 3D.
+#[test]
+fn a_distance_between_points_that_coincidences_join_conflicts_with_them() {
+    for three_d in [false, true] {
+        let mut s = plane();
+        let points = [
+            (1, 0.0, 0.0),
+            (2, 1.0, 2.0),
+            (3, 3.0, 1.0),
+            (4, -2.0, 5.0),
+            (5, 4.0, 6.0),
+            (6, 7.0, -1.0),
+            (7, 9.0, 3.0),
+            (8, 2.0, 8.0),
+        ];
+        for (h, x, y) in points {
+            if three_d {
+                let p = 10 * h;
+                for (k, v) in [x, y, 0.5 * x - 0.25 * y].into_iter().enumerate() {
+                    s.add_param(Param::new(p + k as u32, 2, v)).unwrap();
+                }
+                s.add_entity(Entity::point_3d(h, 2, [p, p + 1, p + 2]))
+                    .unwrap();
+            } else {
+                pt(&mut s, h, x, y);
+            }
+        }
+        let wp = (!three_d).then_some(WP);
+        for (h, a, b) in [(21, 4, 5), (22, 6, 7), (23, 2, 8)] {
+            s.add_entity(Entity::line(h, 2, wp, a, b)).unwrap();
+        }
+        for c in [
+            Constraint::new(1, 2, K::PointsCoincident).with_points(1, 2),
+            Constraint::new(2, 2, K::PointsCoincident).with_points(2, 3),
+            Constraint::new(3, 2, K::PtPtDistance)
+                .with_points(1, 3)
+                .with_val(1.2),
+            Constraint::new(4, 2, K::PtPtDistance)
+                .with_points(4, 5)
+                .with_val(7.9),
+            Constraint::new(5, 2, K::EqualLengthLines).with_entities([22, 21, 0, 0]),
+            Constraint::new(6, 2, K::EqualLengthLines).with_entities([21, 23, 0, 0]),
+            Constraint::new(7, 2, K::EqualLengthLines).with_entities([23, 22, 0, 0]),
+        ] {
+            s.add_constraint(c.in_workplane(wp)).unwrap();
+        }
+        let d = run(&s);
+        assert_eq!(d.outcome, Outcome::Inconsistent, "3D: {three_d}");
+        assert!(
+            d.conflicting.contains(&ConflictSet {
+                members: cs(&[3, 2, 1]),
+                verified: true
+            }),
+            "3D: {three_d}: {:?}",
+            d.conflicting
+        );
+        let r = s.solve_group(2).unwrap();
+        assert_eq!(r.outcome, Outcome::Inconsistent, "3D: {three_d}");
+        assert_eq!(
+            r.failed,
+            [1, 2, 3].map(ConstraintId).to_vec(),
+            "3D: {three_d}"
+        );
+    }
+}

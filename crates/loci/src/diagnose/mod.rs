@@ -73,15 +73,35 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
         Some(r) => circuits::circuits(&eqs, &lin, r, cfg),
         None => Vec::new(),
     };
-    let mut conflicting = conflict_sets(
-        &eqs,
-        &lin,
-        &circuits,
-        &[&values, &start],
-        report.outcome,
-        cfg,
-        usize::MAX,
-    );
+    let starts: [&[f64]; 2] = [&values, &start];
+    let mut conflicting = match eqs.linearise_off_singular(&values, &lin, cfg.tolerance) {
+        // Conflicts are looked for off a point where an equation that does not hold has no
+        // gradient (see there); everything else is read where the solve stopped.
+        Some(moved) => {
+            let circuits = match Rank::new(&eqs, &moved, cfg).as_mut() {
+                Some(r) => circuits::circuits(&eqs, &moved, r, cfg),
+                None => Vec::new(),
+            };
+            conflict_sets(
+                &eqs,
+                &moved,
+                &circuits,
+                &starts,
+                report.outcome,
+                cfg,
+                usize::MAX,
+            )
+        }
+        None => conflict_sets(
+            &eqs,
+            &lin,
+            &circuits,
+            &starts,
+            report.outcome,
+            cfg,
+            usize::MAX,
+        ),
+    };
     if ran_off(&eqs, &start, report.residual) {
         conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
     }
@@ -216,6 +236,9 @@ pub(crate) fn name_conflicts(
     let starts: [&[f64]; 2] = [values, &start];
     let sets_in = |eqs: &Equations| -> Vec<ConflictSet> {
         let lin = eqs.linearise(values);
+        let lin = eqs
+            .linearise_off_singular(values, &lin, cfg.tolerance)
+            .unwrap_or(lin);
         let Some(mut rank) = Rank::new(eqs, &lin, cfg) else {
             return Vec::new();
         };

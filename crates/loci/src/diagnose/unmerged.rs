@@ -7,6 +7,10 @@ use crate::equations::{compile_unmerged, compile_unmerged_only, Kernel, Owner, R
 use crate::error::ModelError;
 use crate::model::{GroupId, System};
 
+/// The size of the move off a point where an equation that does not hold has no gradient,
+/// relative to its residual and to each unknown moved (Newton's own nudge).
+const NUDGE: f64 = 1e-3;
+
 /// Marks a parameter that is a constant of the group.
 pub(crate) const CONSTANT: u32 = u32::MAX;
 
@@ -220,6 +224,41 @@ impl Equations {
             }
         }
         Linear { r, jn: jv, inv }
+    }
+
+    /// The equations linearised off `values`, when an equation that does not hold there
+    /// (beyond `tol`) has unknowns but no gradient: at a point where the unknowns of every
+    /// such equation are moved by a small amount in a generic direction, as Newton moves them.
+    /// `None` when there is none.
+    ///
+    /// A distance between two points that coincidences elsewhere have put on top of each
+    /// other has no direction where the solve stopped: its row is empty, so it stood alone as
+    /// its own circuit, which holds alone, and the conflict it takes part in went unnamed (a
+    /// 3D sketch with points 5 = 10 and 10 = 11 and 1.2 between 5 and 11: `did_not_converge`
+    /// where SolveSpace names the distance). Off that point the row has a direction, the
+    /// coincidences' rows span it, and the circuit of the three is the conflict. What the
+    /// circuits propose is still solved alone before it is named, so the move can add no
+    /// false claim.
+    pub fn linearise_off_singular(&self, values: &[f64], lin: &Linear, tol: f64) -> Option<Linear> {
+        let mut moved: Option<Vec<f64>> = None;
+        let mut done = vec![false; self.param_of_col.len()];
+        for i in 0..self.rows {
+            let r = lin.r[i];
+            if lin.inv[i] != 0.0 || r.abs() <= tol || !r.is_finite() {
+                continue;
+            }
+            let size = NUDGE * r.abs().max(1.0);
+            for (c, _) in self.row_entries(i) {
+                let c = c as usize;
+                if std::mem::replace(&mut done[c], true) {
+                    continue;
+                }
+                let x = moved.get_or_insert_with(|| values.to_vec());
+                let p = self.param_of_col[c];
+                x[p] += size * values[p].abs().max(1.0) * crate::solve::newton::generic(c, 0);
+            }
+        }
+        moved.map(|x| self.linearise(&x))
     }
 
     /// `out = Jn v` (rows).

@@ -1388,7 +1388,7 @@ pub(super) fn relative_move(dx: &[f64], x: &[f64]) -> f64 {
 
 /// A number in [-1, -0.5] or [0.5, 1] that depends only on `c` and `attempt`: directions of
 /// nudges that are reproducible and that no constraint is likely to be singular along.
-pub(super) fn generic(c: usize, attempt: usize) -> f64 {
+pub(crate) fn generic(c: usize, attempt: usize) -> f64 {
     let mut z = (c as u64)
         .wrapping_mul(0x9E37_79B9_7F4A_7C15)
         .wrapping_add((attempt as u64 + 1).wrapping_mul(0xBF58_476D_1CE4_E5B9));
