@@ -42,8 +42,8 @@ const DEFAULT_SYSTEMS: u64 = 120;
 /// kind of wrong answer larger runs have found, so that every fix is checked by
 /// `cargo test`. (Seeds name systems of this generator: changing the generator changes them.)
 const PINNED_SEEDS: &[u64] = &[
-    203, 310, 516, 599, 806, 850, 976, 991, 1043, 1186, 1287, 1493, 2473, 2485, 3323, 3364, 3923,
-    3953, 4204, 4465, 4650, 4996,
+    203, 310, 516, 599, 806, 844, 850, 976, 991, 1043, 1186, 1287, 1493, 2473, 2485, 3323, 3364,
+    3923, 3953, 4204, 4465, 4650, 4996,
 ];
 
 /// Seeds where loci is known to answer wrongly today (or to fail where SolveSpace succeeds),
