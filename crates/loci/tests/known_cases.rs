@@ -294,17 +294,20 @@ fn a_staircase_drawn_flat_is_never_called_inconsistent() {
     }
 }
 
-/// Two random sketches against SolveSpace 3.3, cut down to what shows each failure, where
-/// loci did not converge and named nothing and SolveSpace names the planted constraint. Seed
-/// 844: an angle of 137.87 degrees between a horizontal and a vertical line, whose
-/// derivatives were rounding (6e-17) and, normalised, read its miss as 3e16. Seed 53: a
-/// distance between two points that two coincidences join, whose row is empty where the
-/// solve stops. Both now name the planted conflict and nothing else.
+/// Random sketches against SolveSpace 3.3, cut down to what shows each failure, where loci
+/// did not converge and named nothing and SolveSpace names the planted constraint. Seed 844:
+/// an angle of 137.87 degrees between a horizontal and a vertical line, whose derivatives
+/// were rounding (6e-17) and, normalised, read its miss as 3e16. Seed 53: a distance between
+/// two points that two coincidences join, whose row is empty where the solve stops. Seed
+/// 2830: a distance, a midpoint and the distance to it that cannot agree, beside an angle
+/// that made Newton wander; damped steps stopped short of the least-squares point, where the
+/// rank was still full. Each now names the planted conflict and nothing else.
 #[test]
 fn conflicts_through_merged_points_and_lines_are_named() {
     for (file, named) in [
         ("diff_seed844_conflicting.json", vec![2, 13, 20]),
         ("diff_seed53_conflicting.json", vec![2, 5, 6]),
+        ("diff_seed2830_conflicting.json", vec![2, 5, 6]),
     ] {
         let mut sys = load(file);
         let r = solve(&mut sys, 2.into(), &[], &Config::default()).unwrap();

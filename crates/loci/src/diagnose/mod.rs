@@ -537,16 +537,15 @@ fn conflict_sets(
             out.push(ConflictSet { members, verified });
         }
     }
-    // No candidate holds up, yet the solve stopped at a least-squares point with residuals
-    // left, or did not converge at all: the dependence may run through constraints that hold
-    // there (the ones that pin a line on which a point cannot be), or show only at a point the
-    // solve did not reach. Shrink the whole set of equations to a minimal set that fails while
-    // each of its parts solves, if it is small enough to try.
-    let stalled = outcome == Outcome::DidNotConverge;
-    if out.is_empty()
-        && !outcome.is_ok()
-        && (stalled || circuits::stationary_with_residual(eqs, lin, cfg))
-    {
+    // No candidate holds up, yet the solve failed: the dependence may run through constraints
+    // that hold where it stopped (the ones that pin a line on which a point cannot be), or
+    // show only at a point the solve did not reach. Shrink the whole set of equations to a
+    // minimal set that fails while each of its parts solves, if it is small enough to try.
+    // Wherever the solve stopped: damped steps that end short of the least-squares point (not
+    // yet stationary there) leave the rank full, and a distance, a midpoint and the distance
+    // to it that cannot agree went unnamed beside an angle that made Newton wander (a random
+    // sketch against SolveSpace, which names them; 16 such in 5,000).
+    if out.is_empty() && !outcome.is_ok() {
         let all = members_of(&mut (0..eqs.rows));
         if all.len() <= WHOLE_SEARCH_LIMIT {
             let (members, verified) = minimal::minimise(eqs, &all, starts, cfg);
