@@ -107,7 +107,19 @@ fn segment(s: &mut Sketch, len: f64, fixed: bool) -> usize {
 
 /// A value changed by a factor: enough to contradict, never enough to change its sign.
 fn off(s: &mut Sketch, v: f64) -> f64 {
-    v * if s.rng.chance(0.5) { 1.3 } else { 0.7 }
+    let f = if s.rng.chance(0.5) { 1.3 } else { 0.7 };
+    apart(v, f)
+}
+
+/// `v` times `f`, or, for a `v` that is zero but for rounding (a point in a plane, measured
+/// at -2e-16), `v` moved by `f - 1`: a multiple of it would contradict nothing (seed 8169
+/// called a copy at -2.9e-16 of a distance at -2.2e-16 a contradiction).
+fn apart(v: f64, f: f64) -> f64 {
+    if v.abs() < 1e-6 {
+        v + (f - 1.0)
+    } else {
+        v * f
+    }
 }
 
 fn duplicate(s: &mut Sketch, conflicting: bool) -> Planted {
@@ -131,10 +143,10 @@ fn duplicate(s: &mut Sketch, conflicting: bool) -> Planted {
             if c.val > 90.0 {
                 c.val * 0.8
             } else {
-                c.val * 1.3
+                apart(c.val, 1.3)
             }
         } else {
-            c.val * 1.3
+            apart(c.val, 1.3)
         };
         (c.val, bad)
     });
