@@ -73,35 +73,24 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
         Some(r) => circuits::circuits(&eqs, &lin, r, cfg),
         None => Vec::new(),
     };
-    let starts: [&[f64]; 2] = [&values, &start];
-    let mut conflicting = match eqs.linearise_off_singular(&values, &lin, cfg.tolerance) {
-        // Conflicts are looked for off a point where an equation that does not hold has no
-        // gradient (see there); everything else is read where the solve stopped.
-        Some(moved) => {
-            let circuits = match Rank::new(&eqs, &moved, cfg).as_mut() {
-                Some(r) => circuits::circuits(&eqs, &moved, r, cfg),
-                None => Vec::new(),
-            };
-            conflict_sets(
-                &eqs,
-                &moved,
-                &circuits,
-                &starts,
-                report.outcome,
-                cfg,
-                usize::MAX,
-            )
-        }
-        None => conflict_sets(
-            &eqs,
-            &lin,
-            &circuits,
-            &starts,
-            report.outcome,
-            cfg,
-            usize::MAX,
-        ),
-    };
+    // Conflicts are looked for off a point where an equation that does not hold has no
+    // gradient (see there); everything else is read where the solve stopped.
+    let moved = eqs.linearise_off_singular(&values, &lin, cfg.tolerance);
+    let moved_circuits = moved
+        .as_ref()
+        .map(|m| match Rank::new(&eqs, m, cfg).as_mut() {
+            Some(r) => circuits::circuits(&eqs, m, r, cfg),
+            None => Vec::new(),
+        });
+    let mut conflicting = conflict_sets(
+        &eqs,
+        moved.as_ref().unwrap_or(&lin),
+        moved_circuits.as_ref().unwrap_or(&circuits),
+        &[&values, &start],
+        report.outcome,
+        cfg,
+        usize::MAX,
+    );
     if ran_off(&eqs, &start, report.residual) {
         conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
     }
@@ -544,7 +533,7 @@ fn conflict_sets(
     // Wherever the solve stopped: damped steps that end short of the least-squares point (not
     // yet stationary there) leave the rank full, and a distance, a midpoint and the distance
     // to it that cannot agree went unnamed beside an angle that made Newton wander (a random
-    // sketch against SolveSpace, which names them; 16 such in 5,000).
+    // sketch against SolveSpace, which names them; 17 such in 5,000).
     if out.is_empty() && !outcome.is_ok() {
         let all = members_of(&mut (0..eqs.rows));
         if all.len() <= WHOLE_SEARCH_LIMIT {
