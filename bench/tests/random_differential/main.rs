@@ -43,19 +43,13 @@ const DEFAULT_SYSTEMS: u64 = 120;
 /// `cargo test`. (Seeds name systems of this generator: changing the generator changes them.)
 const PINNED_SEEDS: &[u64] = &[
     203, 310, 311, 516, 599, 806, 833, 844, 850, 976, 991, 1043, 1061, 1186, 1287, 1493, 2473,
-    2485, 2830, 3323, 3347, 3364, 3923, 3953, 4204, 4465, 4650, 4996, 7929, 8169,
+    2485, 2830, 3323, 3347, 3364, 3923, 3953, 4204, 4465, 4650, 4996, 7929, 8169, 22011, 25105,
 ];
 
 /// Seeds where loci is known to answer wrongly today (or to fail where SolveSpace succeeds),
 /// with the reason. The test tolerates these and says when one of them passes, so that it
 /// can be removed as the fix lands.
-const KNOWN_FAILURES: &[(u64, &str)] = &[(7929, NEARLY_DEPENDENT), (22011, NEARLY_DEPENDENT)];
-
-const NEARLY_DEPENDENT: &str = "did_not_converge (largest residual 4.9e-10) on a satisfiable 3D \
-    sketch with a duplicated distance that SolveSpace solves: Newton converges linearly on rows \
-    that become dependent at the solution, the rank test drops one of them at 2.9e-10, a slide \
-    towards the drawing then moves along that row's own direction and leaves it at 4e-10, and \
-    plain steps, which leave dropped rows alone, never mend it";
+const KNOWN_FAILURES: &[(u64, &str)] = &[];
 
 fn env_u64(name: &str) -> Option<u64> {
     std::env::var(name).ok().and_then(|v| v.trim().parse().ok())
