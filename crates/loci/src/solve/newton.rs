@@ -728,7 +728,9 @@ impl Component {
         if fin.marginal {
             return self.solve_at(kernels, x, values, &tight(), scratch, false);
         }
-        if fin.converged || fin.dropped.is_empty() || !(fin.residual <= NEAR_MISS * cfg.tolerance) {
+        // Not a number (a residual that overflowed) is no near miss.
+        let near = fin.residual <= NEAR_MISS * cfg.tolerance;
+        if fin.converged || fin.dropped.is_empty() || !near {
             return fin;
         }
         // Within a few orders of the tolerance, with rows dropped: a root where rows become
