@@ -363,3 +363,22 @@ fn roots_where_rows_become_dependent_are_reached() {
         assert_eq!((again.outcome, again.dof), (r.outcome, r.dof), "{file}");
     }
 }
+
+/// Seed 59100 of the random differential: a satisfiable 2D sketch of 23 constraints that
+/// SolveSpace solves. Newton from the drawing failed, no dependence showed a conflict, and
+/// shrinking the whole group found 18 constraints whose solves failed while each 17 of them
+/// solved: the sketch was called inconsistent with those named, where building it up one
+/// constraint at a time solves it (as `loci check` did). A set found that way no longer
+/// proves a conflict before the build-up has been tried.
+#[test]
+fn a_set_found_only_by_failing_solves_does_not_stop_the_build_up() {
+    let file = "diff_seed59100_base.json";
+    let mut sys = load(file);
+    let r = solve(&mut sys, 2.into(), &[], &Config::default()).unwrap();
+    assert_eq!(r.outcome, Outcome::Okay, "{r:?}");
+    assert!(r.residual <= 1e-10, "residual {}", r.residual);
+    assert_eq!(r.dof, 26);
+    let d = load(file).diagnose(2).unwrap();
+    assert_eq!((d.outcome, d.dof), (Outcome::Okay, 26));
+    assert!(d.conflicting.is_empty());
+}

@@ -82,7 +82,7 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
             Some(r) => circuits::circuits(&eqs, m, r, cfg),
             None => Vec::new(),
         });
-    let mut conflicting = conflict_sets(
+    let (mut conflicting, _) = conflict_sets(
         &eqs,
         moved.as_ref().unwrap_or(&lin),
         moved_circuits.as_ref().unwrap_or(&circuits),
@@ -223,6 +223,9 @@ pub(crate) fn name_conflicts(
 ) -> bool {
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let starts: [&[f64]; 2] = [values, &start];
+    // Whether the sets were found only by shrinking the whole group: no dependence where the
+    // solve stopped shows them, only solves that fail.
+    let whole_search = std::cell::Cell::new(false);
     let sets_in = |eqs: &Equations| -> Vec<ConflictSet> {
         let lin = eqs.linearise(values);
         let lin = eqs
@@ -233,7 +236,7 @@ pub(crate) fn name_conflicts(
         };
         let mut rows = circuits::may_conflict(eqs, &lin, &mut rank, cfg);
         let sets_of = |circuits: &[Circuit]| {
-            conflict_sets(
+            let (sets, whole) = conflict_sets(
                 eqs,
                 &lin,
                 circuits,
@@ -241,7 +244,9 @@ pub(crate) fn name_conflicts(
                 report.outcome,
                 cfg,
                 cfg.verify_conflicts_up_to,
-            )
+            );
+            whole_search.set(whole);
+            sets
         };
         if rows.len() > LAZY_FROM {
             // The circuits of the rows with the largest residuals first: when the sets they
@@ -304,9 +309,13 @@ pub(crate) fn name_conflicts(
     // Shown only by a set that failed on its own from where the solve stopped, from the
     // drawing and built up one constraint at a time: a large set, checked quickly, may fail
     // only because Newton folded the sketch on its way.
-    let proven = sets
-        .iter()
-        .any(|s| s.verified || s.members.len() <= minimal::LARGE_SET);
+    // A set found only by shrinking the whole group is no proof either: its solves may fail
+    // where the build-up one constraint at a time succeeds (18 constraints of a random sketch
+    // that SolveSpace solves were named, each 17 of them solving).
+    let proven = !whole_search.get()
+        && sets
+            .iter()
+            .any(|s| s.verified || s.members.len() <= minimal::LARGE_SET);
     let members: Vec<Member> = if sets.is_empty() {
         report.outcome = Outcome::DidNotConverge;
         let eqs = match whole {
@@ -383,7 +392,8 @@ const WHOLE_SEARCH_LIMIT: usize = 64;
 /// Minimal conflict sets from the conflicting circuits; for a solve that stopped at a
 /// least-squares minimum with no dependent row, from the rows with residuals left. Each is
 /// reported only once it fails on its own from one of `starts` (where the solve stopped, the
-/// drawing); those of up to `minimise_up_to` members are also shrunk to minimal sets.
+/// drawing); those of up to `minimise_up_to` members are also shrunk to minimal sets. Also
+/// whether the one set was found by shrinking the whole group, no dependence showing it.
 fn conflict_sets(
     eqs: &Equations,
     lin: &Linear,
@@ -392,7 +402,7 @@ fn conflict_sets(
     outcome: Outcome,
     cfg: &Config,
     minimise_up_to: usize,
-) -> Vec<ConflictSet> {
+) -> (Vec<ConflictSet>, bool) {
     let members_of = |rows: &mut dyn Iterator<Item = usize>| {
         let mut m: Vec<Member> = rows
             .map(|r| eqs.member(eqs.row_kernel[r] as usize))
@@ -534,6 +544,7 @@ fn conflict_sets(
     // yet stationary there) leave the rank full, and a distance, a midpoint and the distance
     // to it that cannot agree went unnamed beside an angle that made Newton wander (a random
     // sketch against SolveSpace, which names them; 17 such in 5,000).
+    let mut whole = false;
     if out.is_empty() && !outcome.is_ok() {
         let all = members_of(&mut (0..eqs.rows));
         if all.len() <= WHOLE_SEARCH_LIMIT {
@@ -542,6 +553,7 @@ fn conflict_sets(
             // the set is all there is.
             if verified {
                 out.push(ConflictSet { members, verified });
+                whole = true;
             }
         }
     }
@@ -555,7 +567,7 @@ fn conflict_sets(
                 .unwrap_or(std::cmp::Ordering::Equal)
         })
     });
-    out
+    (out, whole)
 }
 
 /// The solver's failed constraints and entities as members.
