@@ -223,20 +223,19 @@ pub(crate) fn name_conflicts(
 ) -> bool {
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let starts: [&[f64]; 2] = [values, &start];
-    // Whether the sets were found only by shrinking the whole group: no dependence where the
-    // solve stopped shows them, only solves that fail.
-    let whole_search = std::cell::Cell::new(false);
-    let sets_in = |eqs: &Equations| -> Vec<ConflictSet> {
+    // The sets, and whether they were found only by shrinking the whole group: no dependence
+    // where the solve stopped shows them, only solves that fail.
+    let sets_in = |eqs: &Equations| -> (Vec<ConflictSet>, bool) {
         let lin = eqs.linearise(values);
         let lin = eqs
             .linearise_off_singular(values, &lin, cfg.tolerance)
             .unwrap_or(lin);
         let Some(mut rank) = Rank::new(eqs, &lin, cfg) else {
-            return Vec::new();
+            return (Vec::new(), false);
         };
         let mut rows = circuits::may_conflict(eqs, &lin, &mut rank, cfg);
         let sets_of = |circuits: &[Circuit]| {
-            let (sets, whole) = conflict_sets(
+            conflict_sets(
                 eqs,
                 &lin,
                 circuits,
@@ -244,9 +243,7 @@ pub(crate) fn name_conflicts(
                 report.outcome,
                 cfg,
                 cfg.verify_conflicts_up_to,
-            );
-            whole_search.set(whole);
-            sets
+            )
         };
         if rows.len() > LAZY_FROM {
             // The circuits of the rows with the largest residuals first: when the sets they
@@ -255,12 +252,12 @@ pub(crate) fn name_conflicts(
             // mesh: one batch of 32 circuits and one solve of all the rest (0.8 s in all),
             // where the 3,385 circuits that could conflict took 2.8 s.
             let first = circuits::circuits_of(eqs, &lin, &mut rank, cfg, &rows[..circuits::BATCH]);
-            let sets = sets_of(&first);
+            let (sets, searched) = sets_of(&first);
             if let Some(shared) = shared_members(&sets) {
                 if sets.iter().all(|s| s.verified)
                     && minimal::all_but_hold(eqs, &shared, &starts, cfg)
                 {
-                    return sets;
+                    return (sets, searched);
                 }
             }
         }
@@ -276,11 +273,11 @@ pub(crate) fn name_conflicts(
         .map(|&c| Owner::Constraint(c))
         .chain(report.failed_entities.iter().map(|&e| Owner::Entity(e)))
         .collect();
-    let mut sets = Vec::new();
+    let (mut sets, mut searched) = (Vec::new(), false);
     if !seed.is_empty() {
         let keep = focus::focus(sys, group, &seed, kernels, links);
         if let Ok(eqs) = Equations::only(sys, group, &start, &|o| keep.contains(&o)) {
-            sets = sets_in(&eqs);
+            (sets, searched) = sets_in(&eqs);
         }
     }
     let mut whole = None;
@@ -288,7 +285,7 @@ pub(crate) fn name_conflicts(
         let Ok(all) = Equations::new(sys, group, &start) else {
             return false;
         };
-        sets = sets_in(&all);
+        (sets, searched) = sets_in(&all);
         whole = Some(all);
     }
     // Only a large set can be dropped for a solve that ran off: the whole group's equations
@@ -308,11 +305,10 @@ pub(crate) fn name_conflicts(
     report.failed_entities.clear();
     // Shown only by a set that failed on its own from where the solve stopped, from the
     // drawing and built up one constraint at a time: a large set, checked quickly, may fail
-    // only because Newton folded the sketch on its way.
-    // A set found only by shrinking the whole group is no proof either: its solves may fail
-    // where the build-up one constraint at a time succeeds (18 constraints of a random sketch
-    // that SolveSpace solves were named, each 17 of them solving).
-    let proven = !whole_search.get()
+    // only because Newton folded the sketch on its way. Nor by a set found only by shrinking
+    // the whole group: its solves may fail where the build-up succeeds (18 constraints of a
+    // random sketch that SolveSpace solves were named, each 17 of them solving).
+    let proven = !searched
         && sets
             .iter()
             .any(|s| s.verified || s.members.len() <= minimal::LARGE_SET);
