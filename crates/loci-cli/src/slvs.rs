@@ -141,11 +141,17 @@ fn render(name: &str, f: &SlvsFile, shown: &[&GroupSolve]) -> String {
 /// constants loci adds in group 0) as a loci JSON problem.
 pub(crate) fn to_json(file: &Path) -> anyhow::Result<String> {
     let f = load(file)?;
+    // The last group solved that the system has objects in: a file's last group may hold
+    // nothing loci keeps (a comment alone), and a request for it would not load back.
+    let present = f.system.groups();
     let last = f
         .groups
         .iter()
         .rev()
-        .find(|g| g.status == loci::format::slvs::GroupStatus::Solve)
+        .find(|g| {
+            g.status == loci::format::slvs::GroupStatus::Solve
+                && present.binary_search(&g.h).is_ok()
+        })
         .map(|g| g.h);
     let problem = Problem {
         system: f.system,

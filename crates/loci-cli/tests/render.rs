@@ -4,6 +4,8 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+mod common;
+
 fn loci(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_loci"))
         .args(args)
@@ -280,37 +282,12 @@ fn a_translate_group_draws_its_copies_in_the_group_s_colours() {
     assert!(!svg.contains("NaN"));
 }
 
-/// SolveSpace's regression fixtures, outside the repository in `../shared/samples/solvespace`
-/// beside it (or where `LOCI_SOLVESPACE_FIXTURES` points); `None` without them.
-fn fixtures() -> Option<PathBuf> {
-    if let Some(p) = std::env::var_os("LOCI_SOLVESPACE_FIXTURES") {
-        return Some(PathBuf::from(p));
-    }
-    let p = repo("../shared/samples/solvespace");
-    p.is_dir().then_some(p)
-}
-
-fn collect(dir: &Path, out: &mut Vec<PathBuf>) {
-    for e in std::fs::read_dir(dir).unwrap() {
-        let p = e.unwrap().path();
-        if p.is_dir() {
-            collect(&p, out);
-        } else if p.extension().is_some_and(|x| x == "slvs") {
-            out.push(p);
-        }
-    }
-}
-
 #[test]
 fn every_solvespace_fixture_renders_well_formed_svg() {
-    let Some(dir) = fixtures() else {
+    let Some(files) = common::solvespace_fixtures() else {
         eprintln!("note: SolveSpace's fixtures are not beside the checkout; skipped");
         return;
     };
-    let mut files = Vec::new();
-    collect(&dir, &mut files);
-    files.sort();
-    assert!(files.len() >= 200, "{} fixtures", files.len());
     for f in &files {
         let r = loci(&["render", f.to_str().unwrap()]);
         assert_ne!(
