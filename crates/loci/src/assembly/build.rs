@@ -391,3 +391,16 @@ pub(crate) fn read_poses(sys: &System, built: &[Option<PoseParams>], poses: &mut
         *pose = Pose::new(pp.translation.map(v), pp.rotation.map(v));
     }
 }
+
+/// Writes `poses` into the solved values, for another solve to go on from them.
+pub(crate) fn write_poses(sys: &mut System, built: &[Option<PoseParams>], poses: &[Pose]) {
+    for (pose, pp) in poses.iter().zip(built) {
+        let Some(pp) = pp else { continue };
+        for (&h, &v) in pp.translation.iter().zip(&pose.translation) {
+            sys.set_value(h, v);
+        }
+        for (&h, &v) in pp.rotation.iter().zip(&pose.rotation) {
+            sys.set_value(h, v);
+        }
+    }
+}

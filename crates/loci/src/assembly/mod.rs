@@ -48,6 +48,15 @@ use crate::{diagnose, Config, GroupId, Member, Outcome, Solver};
 use prim::{Prim, World};
 use serde::{Deserialize, Serialize};
 
+/// The largest error, in model units or radians, at which a mate missing the tolerance after
+/// a solve that converged is taken for the rounding of reading the poses back (see
+/// [`Assembly::solve`]) and solved on to [`POLISH`] times the tolerance.
+const POLISH_UP_TO: f64 = 1e-6;
+
+/// The tolerance, as a fraction of the assembly's, of the solve that goes on from the poses
+/// read back.
+const POLISH: f64 = 1e-3;
+
 /// How an assembly solves. Every field has a documented default.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
@@ -349,9 +358,28 @@ impl Assembly {
                 // A failure of the quick form is solved again exactly, which names it.
                 let mut cfg = cfg.clone();
                 cfg.name_conflicts = exact || !has_angles;
-                report = Solver::new(group, &[], cfg).solve(&mut sys)?;
+                report = Solver::new(group, &[], cfg.clone()).solve(&mut sys)?;
                 if report.outcome.is_ok() {
                     build::read_poses(&sys, &built.poses, &mut poses);
+                    // Poses are read as unit quaternions, which moves a point by the unit
+                    // length's residual times its distance from the frame's origin, and a
+                    // mate's error is a length where the solve bounds each row: a mate can
+                    // read just over the tolerance at an answer the solve accepted. Newton
+                    // goes on from the unit quaternions, to a tighter tolerance (a step or
+                    // two from so close).
+                    let w = World { poses: &poses };
+                    let just_over =
+                        |p: &Prim| !within(p, p.error(&w)) && p.error(&w) <= POLISH_UP_TO;
+                    if prims.iter().any(|(_, p)| just_over(p)) {
+                        build::write_poses(&mut sys, &built.poses, &poses);
+                        let tight = cfg.clone().with_tolerance(tol * POLISH);
+                        let again = Solver::new(group, &[], tight).solve(&mut sys)?;
+                        if again.outcome.is_ok() {
+                            build::read_poses(&sys, &built.poses, &mut poses);
+                            report.iterations += again.iterations;
+                            report.residual = again.residual;
+                        }
+                    }
                 } else {
                     poses = start.clone();
                 }

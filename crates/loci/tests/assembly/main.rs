@@ -4,6 +4,7 @@
 mod angle;
 mod examples;
 mod mates;
+mod random;
 mod report;
 mod roots;
 mod stepped;
