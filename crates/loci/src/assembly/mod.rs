@@ -378,6 +378,9 @@ impl Assembly {
                             build::read_poses(&sys, &built.poses, &mut poses);
                             report.iterations += again.iterations;
                             report.residual = again.residual;
+                        } else {
+                            // The first answer stands, for the diagnosis too.
+                            build::write_poses(&mut sys, &built.poses, &poses);
                         }
                     }
                 } else {

@@ -912,10 +912,10 @@ fn random_assemblies_solve_and_name_conflicts_that_fail_alone() {
 /// among mates: a mate written as several constraints (a fastened joint's point and
 /// orientation) can stand in for another mate's constraints in one minimal set of constraints
 /// while it alone would do among mates (seed 83: fastened, concentric and the lengthened
-/// distance named, where the fastened joint and the distance conflict alone). 16 of the 52
-/// conflicts of seeds 0-149 are not minimal among mates.
+/// distance named, where the fastened joint and the distance conflict alone). 8 of the 52
+/// conflicts named at seeds 0-149 are not minimal among mates (16 of their mates could go).
 #[test]
-#[ignore = "conflicts are minimal among constraints, not yet among mates (16 of 52 at seeds 0-149)"]
+#[ignore = "conflicts are minimal among constraints, not yet among mates (8 of 52 at seeds 0-149)"]
 fn random_assemblies_name_conflicts_minimal_among_mates() {
     run_all(true);
 }
