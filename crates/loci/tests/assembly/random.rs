@@ -28,7 +28,7 @@ use loci::Outcome;
 type V = [f64; 3];
 type Q = [f64; 4];
 
-/// SplitMix64: a small, fixed sequence per seed.
+/// `SplitMix64`: a small, fixed sequence per seed.
 struct Rng(u64);
 
 impl Rng {
@@ -764,7 +764,7 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool, minimal: bool) -> Vec<String> 
         seen.redundant += 1;
     }
     // Lengthen one distance between vertices, or add one, and judge whatever comes back.
-    let mut rng = Rng(seed ^ 0xd15_7a4c_e);
+    let mut rng = Rng(seed ^ 0xd157_a4ce);
     let n = b.places.len();
     let k = b.cases.len();
     let (a, bb) = (0, 1 + rng.below(n - 1));
