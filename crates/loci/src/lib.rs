@@ -44,8 +44,8 @@ pub mod sketch;
 mod solve;
 
 pub use diagnose::{
-    diagnose, ConflictSet, Diagnosis, EntityFreedom, Measurement, Member, Motion, OverConstrained,
-    RedundantSet,
+    diagnose, minimal_groups, ConflictSet, Diagnosis, EntityFreedom, Measurement, Member, Motion,
+    OverConstrained, RedundantSet,
 };
 pub use error::{ModelError, SolveError};
 pub use model::{

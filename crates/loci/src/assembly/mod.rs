@@ -422,7 +422,10 @@ impl Assembly {
         };
         let (conflicts, redundant): (Vec<Vec<usize>>, Vec<Vec<usize>>) = match &diag {
             Some(d) => (
-                d.conflicting.iter().map(|c| sets(&c.members)).collect(),
+                d.conflicting
+                    .iter()
+                    .map(|c| conflict_mates(&sys, group, &owner, &c.members, &cfg))
+                    .collect::<Result<_, _>>()?,
                 d.redundant.iter().map(|r| sets(&r.members)).collect(),
             ),
             None => {
@@ -774,4 +777,51 @@ fn measure(m: &mut Mate, prims: &[Prim], poses: &[Pose], r: &mut MateReport) {
             r.message = format!("joint limit [{lo}, {hi}] violated: {}", report::round(v));
         }
     }
+}
+
+/// The mates of a conflict the core named among its constraints (`members`), minimal among
+/// mates. A set minimal among constraints can hold a mate in part only, where that mate whole
+/// stands in for others (a fastened joint's coincidence, with a concentric mate and a
+/// distance, where the fastened joint and the distance conflict alone): the mates are then
+/// shrunk whole ([`crate::minimal_groups`]). A set that holds each of its mates whole is
+/// minimal among mates already.
+fn conflict_mates(
+    sys: &crate::System,
+    group: GroupId,
+    owner: &[usize],
+    members: &[Member],
+    cfg: &Config,
+) -> Result<Vec<usize>, AssemblyError> {
+    let mate_of = |c: crate::ConstraintId| {
+        owner
+            .get(c.0 as usize)
+            .copied()
+            .filter(|&m| m != usize::MAX)
+    };
+    let mut mates: Vec<usize> = members
+        .iter()
+        .filter_map(|m| match m {
+            Member::Constraint(c) => mate_of(*c),
+            Member::Entity(_) => None,
+        })
+        .collect();
+    mates.sort_unstable();
+    mates.dedup();
+    let mut of_mate = vec![Vec::new(); mates.len()];
+    for c in sys.constraints().iter().filter(|c| c.group == group) {
+        if let Some(i) = mate_of(c.h).and_then(|m| mates.binary_search(&m).ok()) {
+            of_mate[i].push(c.h);
+        }
+    }
+    let whole = of_mate
+        .iter()
+        .flatten()
+        .all(|&c| members.contains(&Member::Constraint(c)));
+    if whole || mates.len() <= 1 {
+        return Ok(mates);
+    }
+    Ok(match crate::minimal_groups(sys, group, &of_mate, cfg)? {
+        Some(kept) => kept.into_iter().map(|i| mates[i]).collect(),
+        None => mates,
+    })
 }

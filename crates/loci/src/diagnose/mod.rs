@@ -19,6 +19,7 @@ mod construct;
 mod eigen;
 mod focus;
 mod freedom;
+mod groups;
 mod measure;
 mod minimal;
 mod motion;
@@ -30,6 +31,7 @@ mod tests;
 mod unmerged;
 
 pub(crate) use construct::construct_group;
+pub use groups::minimal_groups;
 pub use motion::Motion;
 pub use report::{
     ConflictSet, Diagnosis, EntityFreedom, Measurement, Member, OverConstrained, RedundantSet,
