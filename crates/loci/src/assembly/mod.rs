@@ -348,7 +348,11 @@ impl Assembly {
         let has_angles = prims
             .iter()
             .any(|(_, p)| matches!(p, Prim::SignedAngle { .. }));
-        let attempt = |exact: bool| -> Result<_, AssemblyError> {
+        // With the diagnosis to follow, which names the conflicts of a failure again (and
+        // builds the solution up when none is shown), the solve itself does not name them:
+        // a conflict among a dozen mates took seconds to name, twice.
+        let names_later = self.options.diagnose;
+        let attempt = |exact: bool, name: bool| -> Result<_, AssemblyError> {
             let mut poses = aligned.clone();
             let built = build::build(&poses, &grounded, &prims, exact)?;
             let mut sys = built.sys;
@@ -357,7 +361,7 @@ impl Assembly {
             if has_free {
                 // A failure of the quick form is solved again exactly, which names it.
                 let mut cfg = cfg.clone();
-                cfg.name_conflicts = exact || !has_angles;
+                cfg.name_conflicts = name && (exact || !has_angles);
                 report = Solver::new(group, &[], cfg.clone()).solve(&mut sys)?;
                 if report.outcome.is_ok() {
                     build::read_poses(&sys, &built.poses, &mut poses);
@@ -389,7 +393,7 @@ impl Assembly {
             }
             Ok((sys, built.poses, built.owner, has_free, report, poses))
         };
-        let mut solved = attempt(false)?;
+        let mut solved = attempt(false, !names_later)?;
         if has_angles {
             let (_, _, _, _, report, poses) = &solved;
             let all_hold = report.outcome.is_ok()
@@ -397,15 +401,21 @@ impl Assembly {
                     .iter()
                     .all(|(_, p)| within(p, p.error(&World { poses })));
             if !all_hold {
-                solved = attempt(true)?;
+                solved = attempt(true, !names_later)?;
             }
         }
-        let (sys, built_poses, owner, has_free, report, poses) = solved;
-        let diag = if has_free && self.options.diagnose {
-            Some(diagnose(&sys, group, &cfg)?)
+        let (sys, _, _, has_free, report, _) = &solved;
+        let diag = if *has_free && self.options.diagnose {
+            Some(diagnose(sys, group, &cfg)?)
         } else {
             None
         };
+        // The diagnosis solved what the solve, not naming conflicts, gave up on (by building
+        // it up one mate at a time): the solve again as it would have run alone, for the poses.
+        if diag.as_ref().is_some_and(|d| d.outcome.is_ok()) && !report.outcome.is_ok() {
+            solved = attempt(true, true)?;
+        }
+        let (sys, built_poses, owner, _, report, poses) = solved;
         let mate_of = |m: &Member| match m {
             Member::Constraint(c) => owner
                 .get(c.0 as usize)
