@@ -186,8 +186,10 @@ pub struct Mate {
     /// when violated, not enforced.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limits: Option<[f64; 2]>,
-    /// What the mate keeps between solves (the seed's `persistentData`).
-    #[serde(default, skip)]
+    /// What the mate keeps between solves (the seed's `persistentData`). A file keeps the
+    /// directions and the relative pose the mate holds, so that a solved assembly read back
+    /// solves where it is; the measurements are the report's.
+    #[serde(default, skip_serializing_if = "Persistent::holds_nothing")]
     pub persistent: Persistent,
 }
 
@@ -252,15 +254,23 @@ pub struct Persistent {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub relative: Option<(V3, Q4)>,
     /// The last measured value: a distance, or an angle in radians for angles.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip)]
     pub measured: Option<f64>,
     /// For angles and revolutes: the last measured signed angle in radians...
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip)]
     pub angle_rad: Option<f64>,
     /// ... and in degrees.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip)]
     pub angle_deg: Option<f64>,
     /// Rotations applied by the last stepped iteration (the seed's `lastAppliedRotations`).
-    #[serde(default)]
+    #[serde(default, skip)]
     pub last_applied_rotations: Vec<AppliedRotation>,
+}
+
+impl Persistent {
+    /// Whether nothing the mate holds has been captured yet (measurements aside).
+    #[must_use]
+    pub fn holds_nothing(&self) -> bool {
+        self.axis.is_none() && self.axis_b.is_none() && self.relative.is_none()
+    }
 }

@@ -10,7 +10,8 @@
 //! - every mate's relation is computed from the reported poses and must hold,
 //! - the grounded component must not have moved at all,
 //! - the degrees of freedom must equal six per free component less the rank of the
-//!   relations' Jacobian, taken by finite differences on the reported poses.
+//!   relations' Jacobian, taken by finite differences on the reported poses;
+//! - written as a file and read back, the solved assembly must solve where it is.
 //!
 //! A second pass lengthens one point-to-point distance. Whatever loci answers is checked: a
 //! solve by the relations again; a conflict by the named sets, each of which must hold the
@@ -735,6 +736,24 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool) -> Vec<String> {
             r.outcome.name()
         ));
         return wrong;
+    }
+    // Written out as a file and read back, the solved assembly solves where it is: what its
+    // mates hold from the first solve (an angle's axis, a joint's zero) goes with it.
+    let text = serde_json::to_string(&asm).unwrap();
+    let mut back: Assembly = serde_json::from_str(&text).unwrap();
+    let again = back.solve().unwrap();
+    for (c, d) in again.components.iter().zip(&r.components) {
+        let moved = norm(sub(c.pose.translation, d.pose.translation))
+            + (0..4)
+                .map(|i| (c.pose.rotation[i] - d.pose.rotation[i]).abs())
+                .sum::<f64>();
+        if moved > 1e-9 || !again.outcome.is_ok() {
+            wrong.push(format!(
+                "seed {seed}: read back, {} moves by {moved:e} ({}): {again}",
+                c.name,
+                again.outcome.name()
+            ));
+        }
     }
     // The report agrees with itself: a solve that succeeded has every mate holding.
     for m in &r.mates {
