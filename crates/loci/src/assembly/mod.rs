@@ -372,8 +372,10 @@ impl Assembly {
                     // goes on from the unit quaternions, to a tighter tolerance (a step or
                     // two from so close).
                     let w = World { poses: &poses };
-                    let just_over =
-                        |p: &Prim| !within(p, p.error(&w)) && p.error(&w) <= POLISH_UP_TO;
+                    let just_over = |p: &Prim| {
+                        let e = p.error(&w);
+                        !within(p, e) && e <= POLISH_UP_TO
+                    };
                     if prims.iter().any(|(_, p)| just_over(p)) {
                         build::write_poses(&mut sys, &built.poses, &poses);
                         let tight = cfg.clone().with_tolerance(tol * POLISH);
@@ -416,20 +418,8 @@ impl Assembly {
             solved = attempt(true, true)?;
         }
         let (sys, built_poses, owner, _, report, poses) = solved;
-        let mate_of = |m: &Member| match m {
-            Member::Constraint(c) => owner
-                .get(c.0 as usize)
-                .copied()
-                .filter(|&m| m != usize::MAX),
-            Member::Entity(_) => None,
-        };
         let ids: Vec<String> = self.mates.iter().map(|m| m.id.clone()).collect();
-        let sets = |members: &[Member]| {
-            let mut v: Vec<usize> = members.iter().filter_map(mate_of).collect();
-            v.sort_unstable();
-            v.dedup();
-            v
-        };
+        let sets = |members: &[Member]| mates_of(&owner, members);
         let (conflicts, redundant): (Vec<Vec<usize>>, Vec<Vec<usize>>) = match &diag {
             Some(d) => (
                 d.conflicting
@@ -789,6 +779,26 @@ fn measure(m: &mut Mate, prims: &[Prim], poses: &[Pose], r: &mut MateReport) {
     }
 }
 
+/// The mate a member of the core's system was written for, if any (`owner`: by constraint
+/// handle, `usize::MAX` for none).
+fn mate_of(owner: &[usize], m: &Member) -> Option<usize> {
+    match m {
+        Member::Constraint(c) => owner
+            .get(c.0 as usize)
+            .copied()
+            .filter(|&m| m != usize::MAX),
+        Member::Entity(_) => None,
+    }
+}
+
+/// The mates `members` were written for, ascending, each once.
+fn mates_of(owner: &[usize], members: &[Member]) -> Vec<usize> {
+    let mut v: Vec<usize> = members.iter().filter_map(|m| mate_of(owner, m)).collect();
+    v.sort_unstable();
+    v.dedup();
+    v
+}
+
 /// The mates of a conflict the core named among its constraints (`members`), minimal among
 /// mates. A set minimal among constraints can hold a mate in part only, where that mate whole
 /// stands in for others (a fastened joint's coincidence, with a concentric mate and a
@@ -802,24 +812,14 @@ fn conflict_mates(
     members: &[Member],
     cfg: &Config,
 ) -> Result<Vec<usize>, AssemblyError> {
-    let mate_of = |c: crate::ConstraintId| {
-        owner
-            .get(c.0 as usize)
-            .copied()
-            .filter(|&m| m != usize::MAX)
-    };
-    let mut mates: Vec<usize> = members
-        .iter()
-        .filter_map(|m| match m {
-            Member::Constraint(c) => mate_of(*c),
-            Member::Entity(_) => None,
-        })
-        .collect();
-    mates.sort_unstable();
-    mates.dedup();
+    let mates = mates_of(owner, members);
+    if mates.len() <= 1 {
+        return Ok(mates);
+    }
     let mut of_mate = vec![Vec::new(); mates.len()];
     for c in sys.constraints().iter().filter(|c| c.group == group) {
-        if let Some(i) = mate_of(c.h).and_then(|m| mates.binary_search(&m).ok()) {
+        let member = Member::Constraint(c.h);
+        if let Some(i) = mate_of(owner, &member).and_then(|m| mates.binary_search(&m).ok()) {
             of_mate[i].push(c.h);
         }
     }
@@ -827,7 +827,7 @@ fn conflict_mates(
         .iter()
         .flatten()
         .all(|&c| members.contains(&Member::Constraint(c)));
-    if whole || mates.len() <= 1 {
+    if whole {
         return Ok(mates);
     }
     Ok(match crate::minimal_groups(sys, group, &of_mate, cfg)? {
