@@ -171,6 +171,11 @@ fn consistent_from(
 ) -> bool {
     // From where the solve stopped, then from a generic point nearby: a stop at degenerate
     // geometry (a line collapsed to a point) says nothing about whether the set can hold.
+    // Only whether the set holds is asked, so a crawl ends the solve (`Config::crawl_fails`).
+    let cfg = &Config {
+        crawl_fails: true,
+        ..cfg.clone()
+    };
     let mut scratch = Scratch::default();
     nudges.iter().any(|&nudge| {
         let mut v = values.to_vec();

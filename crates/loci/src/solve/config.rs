@@ -72,6 +72,12 @@ pub struct Config {
     /// second solve of a failure whose stop showed no conflict: the rows of a conflict may
     /// become dependent only at the least-squares point itself.
     pub(crate) settle: bool,
+    /// Whether damped steps that crawl (see `newton::CRAWL`) end the solve even where no rows
+    /// depend on others yet. A solve whose stopping point the rank test reads goes on
+    /// crawling until rows become dependent, so that it can name what cannot hold; a check
+    /// of a candidate conflict's part only asks whether its equations hold, and names
+    /// nothing from where it stops.
+    pub(crate) crawl_fails: bool,
 }
 
 impl Default for Config {
@@ -90,6 +96,7 @@ impl Default for Config {
             unknowns_side: true,
             name_conflicts: true,
             settle: true,
+            crawl_fails: false,
         }
     }
 }

@@ -123,6 +123,10 @@ const CRAWL: f64 = 1e-2;
 /// shown from where the crawl begins).
 const CRAWL_PATIENCE: usize = 24;
 
+/// [`CRAWL_PATIENCE`] for a solve that only says whether its equations hold
+/// ([`Config::crawl_fails`]).
+const CRAWL_FAILS_PATIENCE: usize = 2 * NONMONOTONE;
+
 /// The largest residual, in tolerances, above which [`settles_above`] may end a solve: a
 /// merit near rounding creeps down by rounding, at any rate.
 const SETTLE_RESIDUAL: f64 = 1e4;
@@ -841,6 +845,13 @@ impl Component {
         let mut damping: Option<f64> = None;
         // The iteration that took the first damped step.
         let mut damped_from = usize::MAX - CRAWL_PATIENCE;
+        // A check that names nothing needs no point the rank test can read (see
+        // `CRAWL_PATIENCE`): a window of steps that gain next to nothing is its answer.
+        let crawl_patience = if cfg.crawl_fails {
+            CRAWL_FAILS_PATIENCE
+        } else {
+            CRAWL_PATIENCE
+        };
         let mut history: Vec<f64> = Vec::new();
         // Iterations since the merit last reached a new low.
         let (mut best, mut since_best) = (f64::INFINITY, 0usize);
@@ -1140,9 +1151,10 @@ impl Component {
                 // lengths become dependent, is only reached by crawling.
                 break;
             }
-            if damped_dependent
+            if (damped_dependent
+                || cfg.crawl_fails && damping.is_some() && max_r > SETTLE_RESIDUAL * cfg.tolerance)
                 && damping.is_some_and(|d| d <= CRAWL_DAMPING)
-                && iterations >= damped_from + CRAWL_PATIENCE
+                && iterations >= damped_from + crawl_patience
                 && history.len() > NONMONOTONE
                 && m0 > (1.0 - CRAWL) * history[history.len() - 1 - NONMONOTONE]
             {
