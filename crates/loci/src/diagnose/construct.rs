@@ -19,6 +19,7 @@
 //! before.
 
 use super::minimal::solve_alone;
+use super::report::Member;
 use super::unmerged::Equations;
 use crate::equations::{EqKind, Equation, Kernel, Owner};
 use crate::model::ConstraintKind;
@@ -178,5 +179,23 @@ pub(crate) fn construct_group(
             1.0
         }
     };
+    // Newton on the equations as written first, from the drawing, as the diagnosis checks
+    // whether a set can hold (its rows in the order of a report: the latest constraints
+    // first, entities' conditions last): one solve, where the build is one per constraint.
+    // The solve that failed took other steps, on equations merged by substitution and in
+    // another order, which decides the rows dropped where some depend on others; the group
+    // should not be given up on where the diagnosis's own check of it finds a solution (a
+    // random assembly of five parts and twelve mates stopped 0.035 off after 10 iterations,
+    // and its diagnosis, finding every part of it able to hold, named nothing).
+    let mut members: Vec<Member> = kernels.iter().map(|&k| eqs.member(k)).collect();
+    members.sort_by(Member::report_order);
+    members.dedup();
+    let as_checked: Vec<usize> = members.iter().filter_map(|&m| eqs.kernel_of(m)).collect();
+    let mut values = start.clone();
+    if as_checked.len() == kernels.len()
+        && solve_alone(&eqs, &eqs.kernels, &as_checked, &mut values, &scale, cfg)
+    {
+        return Some(values);
+    }
     construct(&eqs, &kernels, &start, &scale, cfg)
 }
