@@ -1151,8 +1151,7 @@ impl Component {
                 // lengths become dependent, is only reached by crawling.
                 break;
             }
-            if (damped_dependent
-                || cfg.crawl_fails && damping.is_some() && max_r > SETTLE_RESIDUAL * cfg.tolerance)
+            if (damped_dependent || cfg.crawl_fails && max_r > SETTLE_RESIDUAL * cfg.tolerance)
                 && damping.is_some_and(|d| d <= CRAWL_DAMPING)
                 && iterations >= damped_from + crawl_patience
                 && history.len() > NONMONOTONE
