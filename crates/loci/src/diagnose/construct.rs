@@ -39,13 +39,15 @@ pub(crate) const ROUNDS: usize = 4;
 const STEP_ITERATIONS: usize = 20;
 
 /// Values (one per parameter) where every equation of `kernels` holds, built up from `start`
-/// one constraint at a time; `None` if no order tried gets them all to hold.
+/// one constraint at a time; `None` if no order tried gets them all to hold. The iterations
+/// of every solve it takes are added to `iterations`.
 pub(crate) fn construct(
     eqs: &Equations,
     kernels: &[usize],
     start: &[f64],
     scale_of_param: &dyn Fn(usize) -> f64,
     cfg: &Config,
+    iterations: &mut usize,
 ) -> Option<Vec<f64>> {
     if kernels.len() > CONSTRUCT_UP_TO {
         return None;
@@ -64,7 +66,17 @@ pub(crate) fn construct(
         let mut defs = eqs.kernels.clone();
         let mut values = start.to_vec();
         let mut have = base.clone();
-        if !have.is_empty() && !solve_alone(eqs, &defs, &have, &mut values, scale_of_param, cfg) {
+        if !have.is_empty()
+            && !solve_alone(
+                eqs,
+                &defs,
+                &have,
+                &mut values,
+                scale_of_param,
+                cfg,
+                iterations,
+            )
+        {
             return None;
         }
         let mut pending = order.clone();
@@ -73,7 +85,16 @@ pub(crate) fn construct(
             let mut rest = Vec::new();
             for k in pending {
                 have.push(k);
-                if add(eqs, &mut defs, &have, k, &mut values, scale_of_param, cfg) {
+                if add(
+                    eqs,
+                    &mut defs,
+                    &have,
+                    k,
+                    &mut values,
+                    scale_of_param,
+                    cfg,
+                    iterations,
+                ) {
                     progressed = true;
                 } else {
                     have.pop();
@@ -111,6 +132,7 @@ fn add(
     values: &mut [f64],
     scale_of_param: &dyn Fn(usize) -> f64,
     cfg: &Config,
+    iterations: &mut usize,
 ) -> bool {
     let mut xs = Vec::new();
     let kern = &mut defs[k];
@@ -120,14 +142,14 @@ fn add(
         kern.eq = eqs.kernels[k].eq.clone();
     }
     let other = other_turn(&kern.eq);
-    if solve_alone(eqs, defs, have, values, scale_of_param, cfg) {
+    if solve_alone(eqs, defs, have, values, scale_of_param, cfg, iterations) {
         return true;
     }
     let Some(eq) = other else {
         return false;
     };
     let chosen = std::mem::replace(&mut defs[k].eq, eq);
-    let added = solve_alone(eqs, defs, have, values, scale_of_param, cfg);
+    let added = solve_alone(eqs, defs, have, values, scale_of_param, cfg, iterations);
     if !added {
         defs[k].eq = chosen;
     }
@@ -151,14 +173,15 @@ pub(crate) fn other_turn(eq: &Equation) -> Option<Equation> {
 }
 
 /// [`construct`] on every equation of `group`, from the values in `sys`, with `dragged`
-/// parameters moving least: values for every parameter where all of them hold, or `None`
-/// (also for groups of more than [`CONSTRUCT_UP_TO`] constraints and conditions).
+/// parameters moving least: values for every parameter where all of them hold, and the
+/// iterations of every solve taken to find them, or `None` (also for groups of more than
+/// [`CONSTRUCT_UP_TO`] constraints and conditions).
 pub(crate) fn construct_group(
     sys: &System,
     group: GroupId,
     dragged: &[ParamId],
     cfg: &Config,
-) -> Option<Vec<f64>> {
+) -> Option<(Vec<f64>, usize)> {
     // Counted before anything is compiled: a large sketch in conflict pays nothing here.
     let constraints = sys
         .constraints()
@@ -192,10 +215,19 @@ pub(crate) fn construct_group(
     members.dedup();
     let as_checked: Vec<usize> = members.iter().filter_map(|&m| eqs.kernel_of(m)).collect();
     let mut values = start.clone();
+    let mut iterations = 0;
     if as_checked.len() == kernels.len()
-        && solve_alone(&eqs, &eqs.kernels, &as_checked, &mut values, &scale, cfg)
+        && solve_alone(
+            &eqs,
+            &eqs.kernels,
+            &as_checked,
+            &mut values,
+            &scale,
+            cfg,
+            &mut iterations,
+        )
     {
-        return Some(values);
+        return Some((values, iterations));
     }
-    construct(&eqs, &kernels, &start, &scale, cfg)
+    construct(&eqs, &kernels, &start, &scale, cfg, &mut iterations).map(|v| (v, iterations))
 }

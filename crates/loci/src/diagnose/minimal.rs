@@ -68,7 +68,7 @@ fn check(
     }
     build
         && starts.last().is_some_and(|start| {
-            construct(eqs, kernels, start, &|_| 1.0, cfg).is_some()
+            construct(eqs, kernels, start, &|_| 1.0, cfg, &mut 0).is_some()
                 || other_turns_hold(eqs, kernels, start, cfg)
         })
 }
@@ -147,7 +147,8 @@ fn other_turns_hold(eqs: &Equations, kernels: &[usize], start: &[f64], cfg: &Con
                 cfg,
                 0.0,
                 false,
-                &mut scratch
+                &mut scratch,
+                &mut 0
             ),
             Alone::Converged
         )
@@ -190,7 +191,8 @@ fn consistent_from(
                 cfg,
                 nudge,
                 any_side,
-                &mut scratch
+                &mut scratch,
+                &mut 0
             ),
             Alone::Failed
         )
@@ -206,7 +208,8 @@ enum Alone {
 
 /// Newton on the equations of `kernels` alone, from `values` (one per parameter; the other
 /// parameters are constants), columns weighted by `scale_of_param`. On success the solution
-/// is written into `values`; otherwise they are left as they were.
+/// is written into `values`; otherwise they are left as they were. Its iterations are added
+/// to `iterations`.
 pub(crate) fn solve_alone(
     eqs: &Equations,
     defs: &[Kernel],
@@ -214,6 +217,7 @@ pub(crate) fn solve_alone(
     values: &mut [f64],
     scale_of_param: &dyn Fn(usize) -> f64,
     cfg: &Config,
+    iterations: &mut usize,
 ) -> bool {
     let mut scratch = Scratch::default();
     let end = solve_set(
@@ -226,6 +230,7 @@ pub(crate) fn solve_alone(
         0.0,
         false,
         &mut scratch,
+        iterations,
     );
     matches!(end, Alone::Converged)
 }
@@ -243,6 +248,7 @@ fn solve_set(
     nudge: f64,
     any_side: bool,
     scratch: &mut Scratch,
+    iterations: &mut usize,
 ) -> Alone {
     let mut local: HashMap<u32, u32> = HashMap::new();
     let mut globals = Vec::new();
@@ -302,6 +308,7 @@ fn solve_set(
         ..cfg.clone()
     };
     let fin = comp.solve(defs, &mut x, values, cfg, scratch);
+    *iterations += fin.iterations;
     if fin.too_large {
         return Alone::TooLarge;
     }

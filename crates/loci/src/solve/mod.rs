@@ -83,15 +83,17 @@ pub(crate) fn solve_core(
     let mut cache = Cache::default();
     let (report, values, _) = solve_values_checked(sys, group, dragged, cfg, &mut cache)?;
     if !report.outcome.is_ok() {
-        if let Some(done) = constructed(sys, group, dragged, cfg, &mut cache)? {
-            return Ok(done);
+        if let Some((mut again, at)) = constructed(sys, group, dragged, cfg, &mut cache)? {
+            again.iterations += report.iterations;
+            return Ok((again, at));
         }
     }
     Ok((report, values))
 }
 
 /// The solve of `group` from a solution built up one constraint at a time
-/// ([`crate::diagnose::construct_group`]), when one can be built: its report and values.
+/// ([`crate::diagnose::construct_group`]), when one can be built: its report (its iterations
+/// those of the build too) and values.
 /// `cache` then holds the equations compiled at that solution, whose branches (which way an
 /// angle turns) are the ones chosen as each constraint was added.
 fn constructed(
@@ -101,11 +103,12 @@ fn constructed(
     cfg: &Config,
     cache: &mut Cache,
 ) -> Result<Option<(Report, Vec<f64>)>, SolveError> {
-    let Some(built) = crate::diagnose::construct_group(sys, group, dragged, cfg) else {
+    let Some((built, building)) = crate::diagnose::construct_group(sys, group, dragged, cfg) else {
         return Ok(None);
     };
     *cache = Cache::default();
-    let (report, values) = solve_values(sys, group, dragged, cfg, cache, Some(&built))?;
+    let (mut report, values) = solve_values(sys, group, dragged, cfg, cache, Some(&built))?;
+    report.iterations += building;
     if report.outcome.is_ok() {
         Ok(Some((report, values)))
     } else {
@@ -267,7 +270,8 @@ fn solve_cached(
         // Nothing shown to fail on its own: Newton from the whole drawing may have folded the
         // sketch on its way. Build the solution up one constraint at a time instead.
         if !proven {
-            if let Some((again, at)) = constructed(sys, group, dragged, cfg, cache)? {
+            if let Some((mut again, at)) = constructed(sys, group, dragged, cfg, cache)? {
+                again.iterations += report.iterations;
                 (report, values) = (again, at);
             }
         }

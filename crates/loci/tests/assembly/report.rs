@@ -384,6 +384,9 @@ fn an_assembly_the_diagnosis_can_solve_is_solved() {
         assert!(r.outcome.is_ok(), "{r}");
         assert!(r.all_hold(), "{r}");
         assert!(r.conflicts.is_empty(), "{r}");
+        // The iterations of the solve that stopped short and of the one that solved it, not
+        // only those of the last solve, which starts at the solution (0).
+        assert!(r.iterations >= 10, "{r}");
         for m in &r.mates {
             assert!(m.error <= 1e-10, "{r}");
         }
