@@ -124,6 +124,7 @@ pub(crate) fn construct(
 /// the sketch as it stands now: its branch (which way an angle turns, which side of a line an
 /// arc touches) is the one the sketch shows now, not the drawing's; and if that one cannot
 /// hold, the other way an angle can turn. On success `values` hold every kernel of `have`.
+#[allow(clippy::too_many_arguments)]
 fn add(
     eqs: &Equations,
     defs: &mut [Kernel],
