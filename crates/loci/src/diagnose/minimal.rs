@@ -385,17 +385,7 @@ pub(crate) fn minimise(
     // Parts judged by Newton alone first (cheap); the set kept must then also resist being
     // built. When it does not, a part was called failing that holds: the filter runs again
     // with every part built up too, so that what it keeps fails for certain.
-    let mut removed: Vec<(Member, usize)> = Vec::new();
-    for &m in &trials {
-        if keep.len() <= 1 {
-            break;
-        }
-        let rest: Vec<usize> = keep.iter().filter(|x| x.0 != m).map(|x| x.1).collect();
-        if !check(eqs, &rest, starts, cfg, false, false, false) {
-            removed.extend(keep.iter().filter(|x| x.0 == m));
-            keep.retain(|x| x.0 != m);
-        }
-    }
+    let removed = deletion_pass(eqs, &mut keep, &trials, starts, cfg, false);
     let kept: Vec<usize> = keep.iter().map(|x| x.1).collect();
     if !removed.is_empty() && consistent(eqs, &kept, starts, cfg) {
         // The members removed, put back from the last to go, make the set fail again by the
@@ -418,20 +408,37 @@ pub(crate) fn minimise(
             }
         }
         keep = with(lo);
-        for &m in &trials {
-            if keep.len() <= 1 {
-                break;
-            }
-            if !keep.iter().any(|x| x.0 == m) {
-                continue;
-            }
-            let rest: Vec<usize> = keep.iter().filter(|x| x.0 != m).map(|x| x.1).collect();
-            if !check(eqs, &rest, starts, cfg, false, true, false) {
-                keep.retain(|x| x.0 != m);
-            }
-        }
+        deletion_pass(eqs, &mut keep, &trials, starts, cfg, true);
     }
     let mut out: Vec<Member> = keep.into_iter().map(|x| x.0).collect();
     out.sort_by(Member::report_order);
     (out, true)
+}
+
+/// One pass of the deletion filter over `keep` (members with their kernels), trying the
+/// members of `trials` in turn: a member goes when the rest still fails ([`check`], each part
+/// also built up with `build`). Returns the entries removed, in the order they went.
+fn deletion_pass(
+    eqs: &Equations,
+    keep: &mut Vec<(Member, usize)>,
+    trials: &[Member],
+    starts: &[&[f64]],
+    cfg: &Config,
+    build: bool,
+) -> Vec<(Member, usize)> {
+    let mut removed = Vec::new();
+    for &m in trials {
+        if keep.len() <= 1 {
+            break;
+        }
+        if !keep.iter().any(|x| x.0 == m) {
+            continue;
+        }
+        let rest: Vec<usize> = keep.iter().filter(|x| x.0 != m).map(|x| x.1).collect();
+        if !check(eqs, &rest, starts, cfg, false, build, false) {
+            removed.extend(keep.iter().filter(|x| x.0 == m));
+            keep.retain(|x| x.0 != m);
+        }
+    }
+    removed
 }
