@@ -239,6 +239,11 @@ const REUSE_MOVE: f64 = 1e-4;
 /// Refinement of such a step ends when the residual of `G y = b` is this small relative to
 /// `b`, or gives up after `REFINE_SWEEPS` (or a sweep that does not gain a factor of 10).
 const REFINED: f64 = 1e-13;
+
+/// A factorisation made before the last steps that were solved with it gives the rank where
+/// they end when its smallest pivot is at least this multiple of the rank tolerance (see
+/// `stale` at the end of [`Component::solve`]).
+const STALE_RANK: f64 = 1e6;
 const REFINE_SWEEPS: usize = 4;
 
 /// From this many rows on, a step solved with an earlier factorisation starts from the last
@@ -875,6 +880,9 @@ impl Component {
         // Whether the factorisation is of an earlier iteration's `G` (see `REUSE_MOVE`); the
         // rows the last fresh one dropped; the largest relative move of the last step.
         let (mut stale, mut last_move) = (false, f64::INFINITY);
+        // How far the unknowns moved since `G` was last factorised afresh (the sum of the
+        // steps' relative moves; infinite after a shortened step).
+        let mut moved_since_factor = 0.0f64;
         // Whether to try that: not again once a refinement has failed in this solve.
         let mut reuse = cfg.reuse_factor;
         let mut left_out: Vec<usize> = Vec::new();
@@ -900,6 +908,7 @@ impl Component {
             } else {
                 factored = gram.factor(0.0, cfg.rank_tolerance);
                 stale = false;
+                moved_since_factor = 0.0;
                 left_out = gram.dropped();
             }
             if marginal
@@ -1085,6 +1094,7 @@ impl Component {
                         reuse = false;
                         factored = gram.factor(0.0, cfg.rank_tolerance);
                         stale = false;
+                        moved_since_factor = 0.0;
                         left_out = gram.dropped();
                         if !factored {
                             break;
@@ -1274,6 +1284,7 @@ impl Component {
             } else {
                 f64::INFINITY
             };
+            moved_since_factor += last_move;
             // Settled once the projection's steps are below `PROJECTED`, or below
             // `SLIDE_NOISE` and no longer shrinking: rounding in a long chain's projection
             // keeps its steps at a few 1e-9 (a 10,000-segment chain took 27 iterations to
@@ -1313,9 +1324,26 @@ impl Component {
             }
         }
         if stale {
-            // The rank is read from `G` where the solve stopped, factorised afresh.
-            if let Some(gram) = gram_slot.as_mut() {
-                factored = gram.factor(0.0, cfg.rank_tolerance);
+            // The rank is read from `G` where the solve stopped, factorised afresh, unless the
+            // earlier factorisation already tells it: it dropped no row, its smallest pivot is
+            // far above the rank tolerance, and the unknowns have moved too little since for
+            // any pivot to fall that far. Each pivot is the squared distance of a unit row from
+            // the span of the rows before it; a move of `REUSE_MOVE` changes those distances
+            // in their last few digits (the 200x200 truss's smallest pivot, 1.98669e-3, read
+            // the same to six digits after the slide), and the rank test does not look at a
+            // pivot above `SUSPECT` times its tolerance. Only where nothing below reads the
+            // factorisation for a step (`project`) or for where a failed solve stopped.
+            let known = converged
+                && left_out.is_empty()
+                && moved_since_factor <= REUSE_MOVE
+                && (!cfg.nearest || (fold && damping.is_none()))
+                && gram_slot
+                    .as_ref()
+                    .is_some_and(|g| g.smallest_kept_pivot() >= STALE_RANK * cfg.rank_tolerance);
+            if !known {
+                if let Some(gram) = gram_slot.as_mut() {
+                    factored = gram.factor(0.0, cfg.rank_tolerance);
+                }
             }
         }
         if !converged && held {
