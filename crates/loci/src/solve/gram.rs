@@ -12,12 +12,14 @@
 
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::ldlt::factor::LdltRegularization;
+use faer::sparse::linalg::amd;
+use faer::sparse::linalg::cholesky::simplicial;
 use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky, CholeskySymbolicParams, LdltRef, SymbolicCholesky,
     SymbolicCholeskyRaw, SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
-use faer::sparse::{SparseColMatRef, SymbolicSparseColMat};
+use faer::sparse::{SparseColMatRef, SymbolicSparseColMat, SymbolicSparseColMatRef};
 use faer::{Conj, MatMut, Par, Side};
 
 use super::envelope::EnvelopeLdlt;
@@ -140,6 +142,78 @@ impl Pattern {
             row_idx,
             products: Products { ptr, pairs },
         }
+    }
+}
+
+/// An upper-triangular pattern (`col_ptr`, `row_idx`, rows ascending in each column) with row
+/// and column `r` moved to `pos[r]`: as its upper triangle or (with `lower`) its lower one,
+/// rows ascending in each column, and where each entry went. Two counting sorts, by row and
+/// then stably by column.
+fn renumbered(
+    col_ptr: &[usize],
+    row_idx: &[usize],
+    pos: &[usize],
+    lower: bool,
+) -> (Vec<usize>, Vec<usize>, Vec<u32>) {
+    let n = col_ptr.len() - 1;
+    let nnz = row_idx.len();
+    let (mut cols, mut rows) = (vec![0u32; nnz], vec![0u32; nnz]);
+    let (mut col_ptr_new, mut row_start) = (vec![0usize; n + 1], vec![0usize; n + 1]);
+    for j in 0..n {
+        for k in col_ptr[j]..col_ptr[j + 1] {
+            let (a, b) = (pos[row_idx[k]], pos[j]);
+            let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+            let (c, r) = if lower { (lo, hi) } else { (hi, lo) };
+            (cols[k], rows[k]) = (c as u32, r as u32);
+            col_ptr_new[c + 1] += 1;
+            row_start[r + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        col_ptr_new[i + 1] += col_ptr_new[i];
+        row_start[i + 1] += row_start[i];
+    }
+    let mut by_row = vec![0u32; nnz];
+    for (k, &r) in rows.iter().enumerate() {
+        let at = &mut row_start[r as usize];
+        by_row[*at] = k as u32;
+        *at += 1;
+    }
+    let mut next = col_ptr_new.clone();
+    let mut row_idx_new = vec![0usize; nnz];
+    let mut moved = vec![0u32; nnz];
+    for &k in &by_row {
+        let (c, r) = (cols[k as usize] as usize, rows[k as usize]);
+        let at = &mut next[c];
+        row_idx_new[*at] = r as usize;
+        moved[k as usize] = *at as u32;
+        *at += 1;
+    }
+    (col_ptr_new, row_idx_new, moved)
+}
+
+impl Products {
+    /// The same products with entry `k` moved to `moved[k]`, each keeping its products in
+    /// their order (so every entry of `G` is summed exactly as before).
+    fn renumbered(&self, moved: &[u32]) -> Self {
+        let nnz = moved.len();
+        let mut ptr = vec![0u32; nnz + 1];
+        for (k, &e) in moved.iter().enumerate() {
+            ptr[e as usize + 1] = self.ptr[k + 1] - self.ptr[k];
+        }
+        for e in 0..nnz {
+            ptr[e + 1] += ptr[e];
+        }
+        let mut pairs = vec![(0u32, 0u32); self.pairs.len()];
+        for (k, &e) in moved.iter().enumerate() {
+            let from = &self.pairs[self.ptr[k] as usize..self.ptr[k + 1] as usize];
+            let mut at = ptr[e as usize] as usize;
+            for &p in from {
+                pairs[at] = p;
+                at += 1;
+            }
+        }
+        Self { ptr, pairs }
     }
 }
 
@@ -644,6 +718,12 @@ impl Products {
 /// truss 8% and the 50x50 profiles 6%; the 20x20 truss is unchanged.
 const SUPERNODAL_THRESHOLD: SupernodalThreshold = SupernodalThreshold(0.25);
 
+/// faer's factor of its threshold on the flops per entry of the factor at which it factorises
+/// in dense blocks of columns: `flops / entries > threshold * 40` (faer 0.24,
+/// `CHOLESKY_SUPERNODAL_RATIO_FACTOR`). The choice is made here, with faer's own rule, as the
+/// order is found here.
+const SUPERNODAL_RATIO_FACTOR: f64 = 40.0;
+
 /// From this many right-hand sides on, a supernodal factor is solved with faer's own blocked
 /// kernels, whose matrix products win once a supernode's block serves that many columns (the
 /// circuits of an inconsistent 50x50 mesh, 32 at a time, took 2-3% longer through
@@ -661,8 +741,16 @@ pub(crate) struct SparseGram {
     l_values: Vec<f64>,
     signs: Vec<i8>,
     shifted: Vec<f64>,
-    /// Position of each diagonal entry in `vals`: the last of its column (rows are sorted).
+    /// Position of each diagonal entry in `vals`: the last of its column in the upper
+    /// triangle, the first in the lower (rows are sorted).
     diag: Vec<usize>,
+    /// Which triangle `pattern` holds: the one the factorisation reads (faer's simplicial
+    /// factorisation the upper, its supernodal one the lower), so that it copies nothing.
+    side: Side,
+    /// The row of `G` at each position of the fill-reducing order, and the position of each
+    /// row: `pattern` is already in that order.
+    fwd: Vec<usize>,
+    inv: Vec<usize>,
     mem: MemBuffer,
     /// A right-hand side in the factor's order, and the work vector of a supernodal solve.
     permuted: Vec<f64>,
@@ -683,24 +771,88 @@ impl SparseGram {
     }
 
     fn new_with(nrows: usize, pattern: Pattern, threshold: SupernodalThreshold) -> Option<Self> {
-        let Pattern {
-            col_ptr,
-            row_idx,
-            products,
-        } = pattern;
-        let nnz = row_idx.len();
-        let diag: Vec<usize> = (0..nrows).map(|c| col_ptr[c + 1] - 1).collect();
-        let pattern = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);
+        // The fill-reducing order is found first, as faer would find it, and `G`'s pattern
+        // and products renumbered into it once: faer then factorises `G` as it is given,
+        // where it would otherwise permute it at every factorisation (5% of a 10x10 sheet of
+        // profiles' solve).
+        let nnz = pattern.row_idx.len();
+        let (mut fwd, mut inv) = (vec![0usize; nrows], vec![0usize; nrows]);
+        let flops = {
+            let upper = SymbolicSparseColMatRef::new_checked(
+                nrows,
+                nrows,
+                &pattern.col_ptr,
+                None,
+                &pattern.row_idx,
+            );
+            let mut mem =
+                MemBuffer::try_new(amd::order_maybe_unsorted_scratch::<usize>(nrows, nnz)).ok()?;
+            amd::order_maybe_unsorted(
+                &mut fwd,
+                &mut inv,
+                upper,
+                amd::Control::default(),
+                MemStack::new(&mut mem),
+            )
+            .ok()?
+        };
+        // The factorisation's structure, from the upper triangle in that order: dense blocks
+        // of columns (supernodal) where faer would choose them, from the same estimate of the
+        // flops (AMD's) over the factor's size.
+        let (col_ptr, row_idx, moved) = renumbered(&pattern.col_ptr, &pattern.row_idx, &inv, false);
+        let upper = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);
+        let supernodal = {
+            let mut etree = vec![0isize; nrows];
+            let mut counts = vec![0usize; nrows];
+            let mut mem = MemBuffer::try_new(simplicial::prefactorize_symbolic_cholesky_scratch::<
+                usize,
+            >(nrows, nnz))
+            .ok()?;
+            simplicial::prefactorize_symbolic_cholesky(
+                &mut etree,
+                &mut counts,
+                upper.as_ref(),
+                MemStack::new(&mut mem),
+            );
+            let size = counts.iter().sum::<usize>() as f64;
+            (flops.n_div + flops.n_mult_subs_ldl) / size > threshold.0 * SUPERNODAL_RATIO_FACTOR
+        };
         let symbolic = factorize_symbolic_cholesky(
-            pattern.as_ref(),
+            upper.as_ref(),
             Side::Upper,
-            SymmetricOrdering::Amd,
+            SymmetricOrdering::Identity,
             CholeskySymbolicParams {
-                supernodal_flop_ratio_threshold: threshold,
+                supernodal_flop_ratio_threshold: if supernodal {
+                    SupernodalThreshold::FORCE_SUPERNODAL
+                } else {
+                    SupernodalThreshold::FORCE_SIMPLICIAL
+                },
                 ..Default::default()
             },
         )
         .ok()?;
+        // `G` itself as the factorisation reads it: the upper triangle for the simplicial
+        // one, the lower for the supernodal one.
+        let (pattern, products, side, diag) = if supernodal {
+            let (col_ptr, row_idx, moved) =
+                renumbered(&pattern.col_ptr, &pattern.row_idx, &inv, true);
+            let diag = col_ptr[..nrows].to_vec();
+            let lower = SymbolicSparseColMat::new_checked(nrows, nrows, col_ptr, None, row_idx);
+            (
+                lower,
+                pattern.products.renumbered(&moved),
+                Side::Lower,
+                diag,
+            )
+        } else {
+            let diag = (0..nrows).map(|c| upper.col_ptr()[c + 1] - 1).collect();
+            (
+                upper,
+                pattern.products.renumbered(&moved),
+                Side::Upper,
+                diag,
+            )
+        };
         let req = StackReq::any_of(&[
             symbolic.factorize_numeric_ldlt_scratch::<f64>(Par::Seq, Default::default()),
             symbolic.solve_in_place_scratch::<f64>(1, Par::Seq),
@@ -721,6 +873,9 @@ impl SparseGram {
             signs: vec![1; nrows],
             shifted: vec![0.0; nrows],
             diag,
+            side,
+            fwd,
+            inv,
             mem,
             permuted: vec![0.0; nrows],
             below,
@@ -761,7 +916,7 @@ impl SparseGram {
             .factorize_numeric_ldlt(
                 &mut self.l_values,
                 a,
-                Side::Upper,
+                self.side,
                 reg,
                 Par::Seq,
                 stack,
@@ -775,10 +930,7 @@ impl SparseGram {
         let mut out = Vec::new();
         self.each_pivot(|k, d| {
             if d >= DROPPED {
-                out.push(match self.symbolic.perm() {
-                    Some(p) => p.arrays().0[k],
-                    None => k,
-                });
+                out.push(self.fwd[k]);
             }
         });
         out.sort_unstable();
@@ -831,51 +983,65 @@ impl SparseGram {
 
     /// Solves `G Y = B` in place for the `k` columns of `B`, one after another.
     fn solve_many(&mut self, rhs: &mut [f64], k: usize) {
-        if let (SymbolicCholeskyRaw::Supernodal(s), true) = (self.symbolic.raw(), k < FAER_BLOCK) {
-            let n = self.n;
-            match self.symbolic.perm() {
-                Some(p) => {
-                    let (fwd, inv) = p.arrays();
-                    let mut x = std::mem::take(&mut self.permuted);
-                    x.resize(n * k, 0.0);
-                    for (xc, bc) in x.chunks_mut(n.max(1)).zip(rhs.chunks(n.max(1))) {
-                        for (xi, &f) in xc.iter_mut().zip(fwd) {
-                            *xi = bc[f];
-                        }
-                    }
-                    supernodal::solve(s, &self.l_values, &mut x, k, &mut self.below);
-                    for (xc, bc) in x.chunks(n.max(1)).zip(rhs.chunks_mut(n.max(1))) {
-                        for (b, &i) in bc.iter_mut().zip(inv) {
-                            *b = xc[i];
-                        }
-                    }
-                    x.truncate(n);
-                    self.permuted = x;
-                }
-                None => supernodal::solve(s, &self.l_values, rhs, k, &mut self.below),
+        let n = self.n;
+        // Into the factor's order, solved there, and back.
+        let mut x = std::mem::take(&mut self.permuted);
+        x.resize(n * k, 0.0);
+        for (xc, bc) in x.chunks_mut(n.max(1)).zip(rhs.chunks(n.max(1))) {
+            for (xi, &f) in xc.iter_mut().zip(&self.fwd) {
+                *xi = bc[f];
             }
-            return;
         }
-        let req = self.symbolic.solve_in_place_scratch::<f64>(k, Par::Seq);
-        let Ok(mut mem) = MemBuffer::try_new(req) else {
-            rhs.chunks_mut(self.n.max(1)).for_each(|c| self.solve(c));
-            return;
-        };
-        let ldlt = LdltRef::new(&self.symbolic, &self.l_values);
-        let m = MatMut::from_column_major_slice_mut(rhs, self.n, k);
-        ldlt.solve_in_place_with_conj(Conj::No, m, Par::Seq, MemStack::new(&mut mem));
+        self.solve_in_order(&mut x, k);
+        for (xc, bc) in x.chunks(n.max(1)).zip(rhs.chunks_mut(n.max(1))) {
+            for (b, &i) in bc.iter_mut().zip(&self.inv) {
+                *b = xc[i];
+            }
+        }
+        x.truncate(n);
+        self.permuted = x;
+    }
+
+    /// [`SparseGram::solve_many`] for right-hand sides already in the factor's order.
+    fn solve_in_order(&mut self, x: &mut [f64], k: usize) {
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Supernodal(s) if k < FAER_BLOCK => {
+                supernodal::solve(s, &self.l_values, x, k, &mut self.below);
+            }
+            _ => {
+                let ldlt = LdltRef::new(&self.symbolic, &self.l_values);
+                let m = MatMut::from_column_major_slice_mut(x, self.n, k);
+                if k == 1 {
+                    let stack = MemStack::new(&mut self.mem);
+                    ldlt.solve_in_place_with_conj(Conj::No, m, Par::Seq, stack);
+                    return;
+                }
+                let req = self.symbolic.solve_in_place_scratch::<f64>(k, Par::Seq);
+                match MemBuffer::try_new(req) {
+                    Ok(mut mem) => {
+                        ldlt.solve_in_place_with_conj(
+                            Conj::No,
+                            m,
+                            Par::Seq,
+                            MemStack::new(&mut mem),
+                        );
+                    }
+                    Err(_) => {
+                        // One column at a time, in the scratch space kept for one.
+                        for c in x.chunks_mut(self.n.max(1)) {
+                            let m = MatMut::from_column_major_slice_mut(c, self.n, 1);
+                            let stack = MemStack::new(&mut self.mem);
+                            ldlt.solve_in_place_with_conj(Conj::No, m, Par::Seq, stack);
+                        }
+                    }
+                }
+            }
+        }
     }
 
     /// Solves `G y = rhs` in place with the last factorisation.
     pub fn solve(&mut self, rhs: &mut [f64]) {
-        if let SymbolicCholeskyRaw::Supernodal(_) = self.symbolic.raw() {
-            self.solve_many(rhs, 1);
-            return;
-        }
-        let ldlt = LdltRef::new(&self.symbolic, &self.l_values);
-        let stack = MemStack::new(&mut self.mem);
-        let m = MatMut::from_column_major_slice_mut(rhs, self.n, 1);
-        ldlt.solve_in_place_with_conj(Conj::No, m, Par::Seq, stack);
+        self.solve_many(rhs, 1);
     }
 }
 
@@ -1057,7 +1223,9 @@ mod tests {
             let b: Vec<f64> = (0..m).map(|i| ((i * 7919) % 1013) as f64 - 500.0).collect();
             let mut ours = b.clone();
             s.solve(&mut ours);
-            let mut faers = b.clone();
+            // faer's solve, on the factor (which is in the fill-reducing order) with `b` put
+            // in that order and the answer put back.
+            let mut faers: Vec<f64> = s.fwd.iter().map(|&r| b[r]).collect();
             let ldlt = LdltRef::new(&s.symbolic, &s.l_values);
             let req = s.symbolic.solve_in_place_scratch::<f64>(1, Par::Seq);
             let mut mem = MemBuffer::new(req);
@@ -1067,6 +1235,7 @@ mod tests {
                 Par::Seq,
                 MemStack::new(&mut mem),
             );
+            let faers: Vec<f64> = s.inv.iter().map(|&p| faers[p]).collect();
             let scale = faers.iter().fold(0.0f64, |a, x| a.max(x.abs()));
             assert!(scale > 1.0);
             for (a, f) in ours.iter().zip(&faers) {
@@ -1091,18 +1260,30 @@ mod tests {
             let Gram::Sparse(s) = &g else {
                 panic!("a truss does not band")
             };
+            // The pattern is in the factor's order, as the triangle the factorisation reads;
+            // entry (i, j) of `G`, i >= j, is at the positions of rows i and j.
             let (ptr, idx) = (s.pattern.col_ptr(), s.pattern.row_idx());
             let mut seen = 0;
-            for i in 0..m {
-                for e in ptr[i]..ptr[i + 1] {
-                    let j = idx[e];
-                    assert!(j <= i);
+            let mut per_row = vec![0usize; m];
+            for c in 0..m {
+                for e in ptr[c]..ptr[c + 1] {
+                    let r = idx[e];
+                    assert!(if s.side == Side::Upper {
+                        r <= c
+                    } else {
+                        r >= c
+                    });
+                    let (a, b) = (s.fwd[c], s.fwd[r]);
+                    let (i, j) = (a.max(b), a.min(b));
                     assert_eq!(s.vals[e].to_bits(), reference(&rows, i, j).to_bits());
+                    per_row[i] += 1;
                     seen += 1;
                 }
-                // Every nonzero of the upper triangle is in the pattern.
+            }
+            for (i, &have) in per_row.iter().enumerate() {
+                // Every nonzero of row i up to the diagonal is in the pattern.
                 let nonzero = (0..=i).filter(|&j| reference(&rows, i, j) != 0.0).count();
-                assert!(ptr[i + 1] - ptr[i] >= nonzero);
+                assert!(have >= nonzero);
             }
             assert_eq!(seen, ptr[m]);
         }
