@@ -207,10 +207,10 @@ impl Products {
         let mut pairs = vec![(0u32, 0u32); self.pairs.len()];
         for (k, &e) in moved.iter().enumerate() {
             let from = &self.pairs[self.ptr[k] as usize..self.ptr[k + 1] as usize];
-            let mut at = ptr[e as usize] as usize;
-            for &p in from {
-                pairs[at] = p;
-                at += 1;
+            let at = ptr[e as usize] as usize;
+            // Element by element: a slice copy calls memcpy for the few pairs of an entry.
+            for (to, &p) in pairs[at..at + from.len()].iter_mut().zip(from) {
+                *to = p;
             }
         }
         Self { ptr, pairs }
