@@ -239,12 +239,12 @@ const REUSE_MOVE: f64 = 1e-4;
 /// Refinement of such a step ends when the residual of `G y = b` is this small relative to
 /// `b`, or gives up after `REFINE_SWEEPS` (or a sweep that does not gain a factor of 10).
 const REFINED: f64 = 1e-13;
+const REFINE_SWEEPS: usize = 4;
 
 /// A factorisation made before the last steps that were solved with it gives the rank where
 /// they end when its smallest pivot is at least this multiple of the rank tolerance (see
 /// `stale` at the end of [`Component::solve`]).
 const STALE_RANK: f64 = 1e6;
-const REFINE_SWEEPS: usize = 4;
 
 /// From this many rows on, a step solved with an earlier factorisation starts from the last
 /// step's solution (see `step` in [`Component::solve`]): the 200x200 truss's three such steps
@@ -1328,10 +1328,10 @@ impl Component {
             // earlier factorisation already tells it: it dropped no row, its smallest pivot is
             // far above the rank tolerance, and the unknowns have moved too little since for
             // any pivot to fall that far. Each pivot is the squared distance of a unit row from
-            // the span of the rows before it; a move of `REUSE_MOVE` changes those distances
-            // in their last few digits (the 200x200 truss's smallest pivot, 1.98669e-3, read
-            // the same to six digits after the slide), and the rank test does not look at a
-            // pivot above `SUSPECT` times its tolerance. Only where nothing below reads the
+            // the span of the rows before it, and moves of `REUSE_MOVE` in all change it by a
+            // small fraction (the 200x200 truss's smallest pivot, 1.98669e-3, reads the same
+            // to six digits after the slide); the rank test does not look again at a pivot
+            // above `SUSPECT` times its tolerance. Only where nothing below reads the
             // factorisation for a step (`project`) or for where a failed solve stopped.
             let known = converged
                 && left_out.is_empty()
