@@ -94,12 +94,7 @@ fn angle(e: &Equation, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f6
     let (ax, ay) = (v(p0[0]) - v(p1[0]), v(p0[1]) - v(p1[1]));
     let (bx, by) = (v(q0[0]) - v(q1[0]), v(q0[1]) - v(q1[1]));
     let (c, s) = (ax * bx + ay * by + 0.0 * 0.0, ax * by - ay * bx);
-    let t = signed_target(e);
-    let (st, ct) = match e.target {
-        // Kept by `prepare` for this very target (sine and cosine are never both zero).
-        [k, st, ct] if k.to_bits() == t.to_bits() && (st != 0.0 || ct != 0.0) => (st, ct),
-        _ => (t.sin(), t.cos()),
-    };
+    let (_, st, ct) = angle_target(e);
     let (num, den) = (s * ct - c * st, c * ct + s * st);
     res[0] = num.atan2(den);
     let r2 = num * num + den * den;
@@ -149,6 +144,23 @@ pub(super) fn prepare(e: &mut Equation) {
     if e.kind == EqKind::Constraint(ConstraintKind::Angle) && e.wp.is_some() {
         let t = signed_target(e);
         e.target = [t, t.sin(), t.cos()];
+        e.prepared_for = Some((e.val.to_bits(), e.choice, e.other));
+    }
+}
+
+/// A 2D angle's signed target with its sine and cosine: those [`prepare`] kept while `val`,
+/// the branch and `other` are the ones it saw (the same numbers to the bit), computed
+/// otherwise.
+pub(super) fn angle_target(e: &Equation) -> (f64, f64, f64) {
+    match e.prepared_for {
+        Some((v, c, o)) if v == e.val.to_bits() && c == e.choice && o == e.other => {
+            let [t, s, c] = e.target;
+            (t, s, c)
+        }
+        _ => {
+            let t = signed_target(e);
+            (t, t.sin(), t.cos())
+        }
     }
 }
 

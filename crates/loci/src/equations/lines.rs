@@ -159,17 +159,14 @@ pub(super) fn choose_angle(e: &Equation, g: &Geo<f64>) -> u8 {
 /// [`COSINE_FORM`]), so that Newton follows SolveSpace's path.
 pub(super) fn angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
     let (a, b) = dirs(e, g, 0, 1);
-    let t = target(e);
     match e.wp {
-        None => out.push(cosine(a, b) - t.cos()),
-        Some(_) if e.choice == COSINE_FORM => out.push(cosine(a, b) - t.cos()),
-        Some(_) => {
-            let t = if e.choice == 1 { -t } else { t };
+        Some(_) if e.choice != COSINE_FORM => {
             // |a||b| sin(angle) and |a||b| cos(angle): atan2 does not need them normalised.
             let (c, s) = (a.dot(b), a.cross(b).z);
-            let (st, ct) = (t.sin(), t.cos());
+            let (_, st, ct) = super::fast::angle_target(e);
             out.push(undefined_or(s * ct - c * st, c * ct + s * st));
         }
+        _ => out.push(cosine(a, b) - target(e).cos()),
     }
 }
 

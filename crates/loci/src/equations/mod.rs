@@ -71,6 +71,10 @@ pub(crate) struct Equation {
     /// For `where_dragged`: the position the point must keep. For a 2D angle: its signed
     /// target in radians with its sine and cosine, kept by [`Equation::prepare`].
     pub target: [f64; 3],
+    /// The `val` (its bits), `choice` and `other` a 2D angle's `target` was computed for:
+    /// evaluations read it while they are unchanged instead of computing it again (a
+    /// rounding, a sine and a cosine each time, library calls in WebAssembly).
+    pub prepared_for: Option<(u64, u8, bool)>,
     /// The bases of the carried entities it reads (see [`refs::Konst`]).
     pub consts: Vec<[f64; 4]>,
 }
@@ -95,6 +99,7 @@ impl Equation {
             signed: c.signed,
             choice: 0,
             target: [0.0; 3],
+            prepared_for: None,
             consts: Vec::new(),
         }
     }
@@ -113,6 +118,7 @@ impl Equation {
             signed: false,
             choice: 0,
             target,
+            prepared_for: None,
             consts: Vec::new(),
         }
     }

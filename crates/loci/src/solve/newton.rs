@@ -683,7 +683,7 @@ impl Component {
                 }
                 let d = acc * self.scale[c];
                 x[c] += d;
-                largest = largest.max(d.abs() / (1.0 + x[c].abs()));
+                largest = larger(largest, d.abs() / (1.0 + x[c].abs()));
             }
             its += 1;
             self.jacobian(kernels, x, w.r, w.jn, w.inv, w.xs, w.jl);
@@ -927,7 +927,7 @@ impl Component {
             // The slide converges linearly where the equations curve much over the distance
             // to the drawing: it gets as many steps as the separate slide would.
             let sliding = fold && damping.is_none() && iterations < MAX_PROJECTION + MAX_RESTORE;
-            let max_r = r.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            let max_r = r.iter().fold(0.0f64, |a, v| larger(a, v.abs()));
             // Plain steps solve the kept rows only: once those nearly hold and the dropped ones
             // are far off (a mesh whose first steps flipped a triangle: kept rows at 2e-3,
             // dropped ones at 2.5), further plain steps converge to a point where the
@@ -1398,7 +1398,7 @@ impl Component {
             dependent: 0,
             dependencies: Vec::new(),
             unsatisfied: (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect(),
-            residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
+            residual: r.iter().fold(0.0f64, |a, v| larger(a, v.abs())),
             too_large: false,
             marginal: false,
             settled: stopped_settling,
@@ -1460,7 +1460,19 @@ pub(super) fn stationary(columns: &Columns, jn: &[f64], r: &[f64], inv: &[f64], 
 pub(super) fn relative_move(dx: &[f64], x: &[f64]) -> f64 {
     dx.iter()
         .zip(x)
-        .fold(0.0f64, |a, (d, v)| a.max(d.abs() / (1.0 + v.abs())))
+        .fold(0.0f64, |a, (d, v)| larger(a, d.abs() / (1.0 + v.abs())))
+}
+
+/// The larger of a running maximum `a` and `b`, a NaN `b` ignored, as `f64::max` does; but
+/// inline in WebAssembly, where `f64::max` is a library call (its `f64.max` instruction keeps a
+/// NaN).
+#[inline]
+pub(super) fn larger(a: f64, b: f64) -> f64 {
+    if b > a {
+        b
+    } else {
+        a
+    }
 }
 
 /// A number in [-1, -0.5] or [0.5, 1] that depends only on `c` and `attempt`: directions of
