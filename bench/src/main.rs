@@ -353,7 +353,7 @@ fn assembly(args: &[String]) -> Result<()> {
         &sizes,
         reps,
         others,
-        Some(&Path::new(env!("CARGO_MANIFEST_DIR"))),
+        Some(Path::new(env!("CARGO_MANIFEST_DIR"))),
         cadquery.as_deref(),
     );
     print!("{}", loci_bench::assembly::table(&t));

@@ -55,7 +55,7 @@ impl Family {
         )
     }
 
-    /// The snake_case name.
+    /// The `snake_case` name.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
@@ -143,7 +143,7 @@ impl Variant {
     /// Every variant.
     pub const ALL: [Variant; 3] = [Variant::Solvable, Variant::Redundant, Variant::Inconsistent];
 
-    /// The snake_case name.
+    /// The `snake_case` name.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {

@@ -41,7 +41,7 @@ impl Solver {
         Solver::PlaneGcs,
     ];
 
-    /// The snake_case name used on the command line.
+    /// The `snake_case` name used on the command line.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {

@@ -164,7 +164,7 @@ fn an_impossible_length_in_profiles_is_named_without_crawling() {
     assert!(r.iterations < 100, "{} iterations", r.iterations);
     // The extra length is the last constraint; the first profile's sides and angles close it.
     let last = sp.system.constraints().last().unwrap().h;
-    assert!(r.failed.contains(&last.into()), "{:?}", r.failed);
+    assert!(r.failed.contains(&last), "{:?}", r.failed);
     assert_eq!(r.failed.len(), 7, "{:?}", r.failed);
 }
 

@@ -189,8 +189,8 @@ impl System {
 }
 
 /// A solve's report as numbers, which the JavaScript wrapper (`reportOf` in `js/loci.js`)
-/// turns into the same object as the report's JSON: the outcome (0 okay, 1 redundant_okay,
-/// 2 inconsistent, 3 did_not_converge), dof, iterations, residual, unknowns, equations,
+/// turns into the same object as the report's JSON: the outcome (0 `okay`, 1 `redundant_okay`,
+/// 2 `inconsistent`, 3 `did_not_converge`), dof, iterations, residual, unknowns, equations,
 /// components, then the number of failed constraints and their handles, then the number of
 /// failed entities and their handles. A small solve spent a sixth of its time under node
 /// writing, decoding and parsing the report's JSON; an array of numbers crosses as one copy.

@@ -78,7 +78,7 @@ macro_rules! kinds {
             /// Every constraint type, in SolveSpace's order.
             pub const ALL: &'static [ConstraintKind] = &[$(ConstraintKind::$variant,)*];
 
-            /// The snake_case name used in files and messages.
+            /// The `snake_case` name used in files and messages.
             #[must_use]
             pub fn name(self) -> &'static str {
                 match self { $(ConstraintKind::$variant => $name,)* }
@@ -96,7 +96,7 @@ macro_rules! kinds {
                 match code { $($slvs => Some(ConstraintKind::$variant),)* _ => None }
             }
 
-            /// The type named `name` (snake_case).
+            /// The type named `name` (`snake_case`).
             #[must_use]
             pub fn from_name(name: &str) -> Option<Self> {
                 match name { $($name => Some(ConstraintKind::$variant),)* _ => None }

@@ -162,7 +162,7 @@ pub enum EntityType {
 }
 
 impl EntityType {
-    /// The snake_case name used in files and messages.
+    /// The `snake_case` name used in files and messages.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {

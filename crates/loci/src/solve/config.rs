@@ -46,8 +46,8 @@ pub struct Config {
     /// equations' form, so on an under-constrained sketch the two end at different solutions;
     /// with this (and `nearest` off) a solve ends where SolveSpace's does. The cosine form
     /// also holds at the angle's mirror image (SolveSpace's angle is unsigned), and it loses
-    /// its gradient at 0 and 180 degrees: angles within about 8 degrees of those (`|cos(val)|
-    /// > 0.99`) keep the signed form. The `slvs` C library and the `loci.slvs` Python module
+    /// its gradient at 0 and 180 degrees: angles within about 8 degrees of those
+    /// (`|cos(val)| > 0.99`) keep the signed form. The `slvs` C library and the `loci.slvs` Python module
     /// set it. Default `false`.
     pub solvespace_angles: bool,
     /// Whether the slide to the nearest solution is folded into Newton's steps (each the

@@ -223,7 +223,7 @@ mod tests {
         assert_eq!(ye[4], 0.0);
         // Each row from its first nonzero to the diagonal: 1 + 2 + 2 + 2 + 4 + 3 entries.
         assert_eq!(e.values_len(), 14);
-        assert!(!e.factor(&vec![f64::NAN; 14], 0.0, 1e-10));
+        assert!(!e.factor(&[f64::NAN; 14], 0.0, 1e-10));
     }
 
     #[test]

@@ -178,6 +178,17 @@ const QUADRATIC: f64 = 1e-2;
 /// unless it was already within rounding of it.
 const QUADRATIC_STEP: f64 = 1e-5;
 
+/// What a step solved with an earlier factorisation of `G` refines with (see `step` in
+/// `Component::solve_at`): work vectors `b`, `res` and `v`, the rows that factorisation
+/// dropped, and the last step's solution to start from.
+type Refine<'a> = (
+    &'a mut [f64],
+    &'a mut [f64],
+    &'a mut [f64],
+    &'a [usize],
+    Option<&'a [f64]>,
+);
+
 /// Work vectors of [`Component::project`], borrowed from the solve's.
 struct Work<'a> {
     r: &'a mut [f64],
@@ -980,105 +991,104 @@ impl Component {
             // Rows that factorisation dropped would stay out, as a fresh one leaves them (their
             // `y` zero, their equations not solved). Returns false if it did not reach
             // `REFINED` within `REFINE_SWEEPS`.
-            let step =
-                |gram: &mut Gram,
-                 y: &mut [f64],
-                 dx: &mut [f64],
-                 project: bool,
-                 refine: Option<(&mut [f64], &mut [f64], &mut [f64], &[usize], Option<&[f64]>)>|
-                 -> bool {
-                    for i in 0..m {
-                        y[i] = -r[i] * inv[i];
-                    }
-                    if project {
-                        for (c, col) in self.columns.iter().enumerate() {
-                            for &(row, idx) in col {
-                                y[row as usize] -= jn[idx as usize] * dz[c];
-                            }
+            let step = |gram: &mut Gram,
+                        y: &mut [f64],
+                        dx: &mut [f64],
+                        project: bool,
+                        refine: Option<Refine<'_>>|
+             -> bool {
+                for i in 0..m {
+                    y[i] = -r[i] * inv[i];
+                }
+                if project {
+                    for (c, col) in self.columns.iter().enumerate() {
+                        for &(row, idx) in col {
+                            y[row as usize] -= jn[idx as usize] * dz[c];
                         }
                     }
-                    let mut ok = true;
-                    if let Some((b, res, v, left_out, last_y)) = refine {
+                }
+                let mut ok = true;
+                if let Some((b, res, v, left_out, last_y)) = refine {
+                    for &d in left_out {
+                        y[d] = 0.0;
+                    }
+                    b.copy_from_slice(y);
+                    let b_size = b.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                    let target = REFINED * b_size;
+                    // `res = b - G y` with `G y = Jn (Jnᵀ y)`, and its largest entry.
+                    let residual = |y: &[f64], res: &mut [f64], v: &mut [f64]| {
+                        res.copy_from_slice(b);
+                        for (c, col) in self.columns.iter().enumerate() {
+                            let mut acc = 0.0;
+                            for &(row, idx) in col {
+                                acc += jn[idx as usize] * y[row as usize];
+                            }
+                            v[c] = acc;
+                        }
+                        for (c, col) in self.columns.iter().enumerate() {
+                            for &(row, idx) in col {
+                                res[row as usize] -= jn[idx as usize] * v[c];
+                            }
+                        }
+                        for &d in left_out {
+                            res[d] = 0.0;
+                        }
+                        res.iter().fold(0.0f64, |a, x| a.max(x.abs()))
+                    };
+                    // From the last step's solution where it leaves less of `b` to solve: as a
+                    // slide settles, `y` settles too (on the multipliers of the nearest
+                    // solution), and the refinement starts from the change alone.
+                    let mut last = f64::INFINITY;
+                    let mut warm = false;
+                    if let Some(prev) = last_y {
+                        y.copy_from_slice(prev);
                         for &d in left_out {
                             y[d] = 0.0;
                         }
-                        b.copy_from_slice(y);
-                        let b_size = b.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-                        let target = REFINED * b_size;
-                        // `res = b - G y` with `G y = Jn (Jnᵀ y)`, and its largest entry.
-                        let residual = |y: &[f64], res: &mut [f64], v: &mut [f64]| {
-                            res.copy_from_slice(b);
-                            for (c, col) in self.columns.iter().enumerate() {
-                                let mut acc = 0.0;
-                                for &(row, idx) in col {
-                                    acc += jn[idx as usize] * y[row as usize];
-                                }
-                                v[c] = acc;
-                            }
-                            for (c, col) in self.columns.iter().enumerate() {
-                                for &(row, idx) in col {
-                                    res[row as usize] -= jn[idx as usize] * v[c];
-                                }
-                            }
-                            for &d in left_out {
-                                res[d] = 0.0;
-                            }
-                            res.iter().fold(0.0f64, |a, x| a.max(x.abs()))
-                        };
-                        // From the last step's solution where it leaves less of `b` to solve: as a
-                        // slide settles, `y` settles too (on the multipliers of the nearest
-                        // solution), and the refinement starts from the change alone.
-                        let mut last = f64::INFINITY;
-                        let mut warm = false;
-                        if let Some(prev) = last_y {
-                            y.copy_from_slice(prev);
-                            for &d in left_out {
-                                y[d] = 0.0;
-                            }
-                            let size = residual(y, res, v);
-                            if size < b_size {
-                                warm = true;
-                                last = size;
-                                if size > target {
-                                    gram.solve(res);
-                                    y.iter_mut().zip(res.iter()).for_each(|(a, d)| *a += d);
-                                }
-                            }
-                        }
-                        if !warm {
-                            y.copy_from_slice(b);
-                            gram.solve(y);
-                        }
-                        ok = last <= target;
-                        for _ in 0..REFINE_SWEEPS {
-                            if ok {
-                                break;
-                            }
-                            let size = residual(y, res, v);
-                            if size <= target {
-                                ok = true;
-                                break;
-                            }
-                            // Not converging fast: a fresh factorisation is cheaper.
-                            if !(size < 0.1 * last) {
-                                break;
-                            }
+                        let size = residual(y, res, v);
+                        if size < b_size {
+                            warm = true;
                             last = size;
-                            gram.solve(res);
-                            y.iter_mut().zip(res.iter()).for_each(|(a, d)| *a += d);
+                            if size > target {
+                                gram.solve(res);
+                                y.iter_mut().zip(res.iter()).for_each(|(a, d)| *a += d);
+                            }
                         }
-                    } else {
+                    }
+                    if !warm {
+                        y.copy_from_slice(b);
                         gram.solve(y);
                     }
-                    for (c, col) in self.columns.iter().enumerate() {
-                        let mut acc = if project { dz[c] } else { 0.0 };
-                        for &(row, idx) in col {
-                            acc += jn[idx as usize] * y[row as usize];
+                    ok = last <= target;
+                    for _ in 0..REFINE_SWEEPS {
+                        if ok {
+                            break;
                         }
-                        dx[c] = acc * self.scale[c];
+                        let size = residual(y, res, v);
+                        if size <= target {
+                            ok = true;
+                            break;
+                        }
+                        // Not converging fast: a fresh factorisation is cheaper.
+                        if !(size < 0.1 * last) {
+                            break;
+                        }
+                        last = size;
+                        gram.solve(res);
+                        y.iter_mut().zip(res.iter()).for_each(|(a, d)| *a += d);
                     }
-                    ok
-                };
+                } else {
+                    gram.solve(y);
+                }
+                for (c, col) in self.columns.iter().enumerate() {
+                    let mut acc = if project { dz[c] } else { 0.0 };
+                    for &(row, idx) in col {
+                        acc += jn[idx as usize] * y[row as usize];
+                    }
+                    dx[c] = acc * self.scale[c];
+                }
+                ok
+            };
             // A step with the factorisation as it is, or with a fresh one if the earlier one
             // no longer serves.
             macro_rules! fresh_step {

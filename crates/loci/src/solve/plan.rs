@@ -72,6 +72,7 @@ pub(super) fn substitute(
 
 impl Plan {
     /// The plan, and the substitution it was read from (at `values`).
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
         sys: &System,
         group: GroupId,

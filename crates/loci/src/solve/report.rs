@@ -25,7 +25,7 @@ impl Outcome {
         matches!(self, Outcome::Okay | Outcome::RedundantOkay)
     }
 
-    /// The snake_case name.
+    /// The `snake_case` name.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {

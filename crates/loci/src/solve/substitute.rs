@@ -124,7 +124,7 @@ impl Substitution {
             (None, Some(f)) => self.fixed[ra] = Some(f),
             _ => {}
         }
-        self.parent[rb as usize] = ra as u32;
+        self.parent[rb] = ra as u32;
         for (from, to) in [(a, b), (b, a)] {
             self.arcs.push((to as u32, owner, self.head[from]));
             self.head[from] = (self.arcs.len() - 1) as u32;

@@ -12,7 +12,7 @@
 //! constrained (DOF 0) and its solution is unique near the start: the exact drawing the
 //! generator perturbs, which the test can compare against.
 //!
-//! Counting: `4n` unknowns; equations `2` (where_dragged) `+ 1` (horizontal) `+ 2(n-1)`
+//! Counting: `4n` unknowns; equations `2` (`where_dragged`) `+ 1` (horizontal) `+ 2(n-1)`
 //! (coincident) `+ n` (lengths) `+ (n-1)` (angles) `= 4n`.
 #![allow(dead_code)]
 

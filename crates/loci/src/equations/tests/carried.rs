@@ -495,9 +495,12 @@ fn the_solver_cache_follows_structural_edits() {
     assert!(worst_condition(&sys) <= 1e-12);
 }
 
+/// A mate added to [`chain`]: its kind, and the link and reference on each side.
+type Extra<'a> = (MateKind, (usize, &'a str), (usize, &'a str));
+
 /// A revolute chain of `n` links (link 0 grounded), each moved off its answer, with
 /// `extra` mates added.
-fn chain(n: usize, extra: &[(MateKind, (usize, &str), (usize, &str))]) -> Assembly {
+fn chain(n: usize, extra: &[Extra<'_>]) -> Assembly {
     let mut asm = Assembly::new();
     let mut at = [0.0f64; 3];
     for i in 0..n {
