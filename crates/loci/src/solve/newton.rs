@@ -255,7 +255,7 @@ const REFINE_SWEEPS: usize = 4;
 /// A factorisation made before the last steps that were solved with it gives the rank where
 /// they end when its smallest pivot is at least this multiple of the rank tolerance (see
 /// `stale` at the end of [`Component::solve`]).
-const STALE_RANK: f64 = 1e6;
+pub(super) const STALE_RANK: f64 = 1e6;
 
 /// From this many rows on, a step solved with an earlier factorisation starts from the last
 /// step's solution (see `step` in [`Component::solve`]): the 200x200 truss's three such steps

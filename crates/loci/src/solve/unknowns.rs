@@ -20,7 +20,9 @@
 //! through `G` with the slide folded in.
 
 use super::gram::{Columns, Gram};
-use super::newton::{generic, stationary, Component, Finish, PROJECTED, SLIDE_NOISE, STATIONARY};
+use super::newton::{
+    generic, stationary, Component, Finish, PROJECTED, SLIDE_NOISE, STALE_RANK, STATIONARY,
+};
 use super::rank::{DEPENDENCY_BLOCK, UNION_PROBES};
 use super::Config;
 use crate::equations::Kernel;
@@ -272,9 +274,33 @@ impl Component {
             } else {
                 f64::INFINITY
             };
-            // As the folded slide settles (see `Component::solve`).
-            settled =
-                last_move <= PROJECTED || (last_move <= SLIDE_NOISE && last_move >= 0.5 * before);
+            // As the folded slide settles (see `Component::solve`): a step below `PROJECTED`,
+            // one below `SLIDE_NOISE` that no longer shrinks, or one shrinking at a rate `q`
+            // at which the steps still to come add up to `PROJECTED` or less (`q / (1 - q)`
+            // times the last).
+            let rate = last_move / before;
+            settled = last_move <= PROJECTED
+                || (last_move <= SLIDE_NOISE && last_move >= 0.5 * before)
+                || (last_move <= SLIDE_NOISE
+                    && before.is_finite()
+                    && rate < 0.5
+                    && last_move * rate / (1.0 - rate) <= PROJECTED);
+            // A whole step that settles the slide where the equations hold ends the steps
+            // without another Jacobian, as the steps through `G` end (see
+            // `Component::solve`): the rank is read from `K` as factorised for this step, with
+            // the Jacobian it was factorised from, at the point the step left (by
+            // `last_move`): within `PROJECTED`, or within `SLIDE_NOISE` where the kept pivots
+            // are far above the rank tolerance, which so small a move cannot bring them near.
+            // A 10x10 mesh slides 7e-6, 2e-9 (at a rate of 3e-4: settled) and took a step of
+            // 7e-13 and a Jacobian more to see it.
+            if alpha == 1.0
+                && settled
+                && rt.iter().all(|v| v.abs() <= cfg.tolerance)
+                && (last_move <= PROJECTED
+                    || k.smallest_kept_pivot() >= STALE_RANK * cfg.rank_tolerance)
+            {
+                return Some(self.rank_by_unknowns(k, true, &jn, &rt, steps + 1, cfg));
+            }
         }
         None
     }
