@@ -158,16 +158,21 @@ fn relative_difference(xa: &[f64], xb: &[f64]) -> f64 {
     largest / scale
 }
 
-/// Solves `start` both ways: the same outcome, DOF and named constraints, and the same
-/// solution to `1e-7` of the drawing's size (where the equations cannot hold, residuals
-/// within a tenth of each other). Returns the report of the default solve.
-fn check_same(start: &System, what: &str) -> Report {
+/// `start` solved as by default (through `Jᵀ J` where it applies), then through `J Jᵀ` alone:
+/// each report with the values where it ended.
+fn both_ways(start: &System) -> ((Report, Vec<f64>), (Report, Vec<f64>)) {
     let rows_only = Config {
         unknowns_side: false,
         ..Config::default()
     };
-    let (a, xa) = run(start, G, &Config::default());
-    let (b, xb) = run(start, G, &rows_only);
+    (run(start, G, &Config::default()), run(start, G, &rows_only))
+}
+
+/// Solves `start` both ways: the same outcome, DOF and named constraints, and the same
+/// solution to `1e-7` of the drawing's size (where the equations cannot hold, residuals
+/// within a tenth of each other). Returns the report of the default solve.
+fn check_same(start: &System, what: &str) -> Report {
+    let ((a, xa), (b, xb)) = both_ways(start);
     assert_eq!(a.outcome, b.outcome, "{what}: {a:?} vs {b:?}");
     assert_eq!(a.dof, b.dof, "{what}");
     assert_eq!(a.failed_entities, b.failed_entities, "{what}");
@@ -307,12 +312,7 @@ fn distances_that_alone_fix_a_corner_point_are_not_named_redundant() {
 fn large_meshes_solved_through_the_unknowns_side_end_as_through_the_equations() {
     for (n, seed) in [(50, 11), (100, 13), (100, 14)] {
         let start = lattice(n, seed, 0.6, true, Variant::Solvable);
-        let rows_only = Config {
-            unknowns_side: false,
-            ..Config::default()
-        };
-        let (a, _) = run(&start, G, &Config::default());
-        let (b, _) = run(&start, G, &rows_only);
+        let ((a, _), (b, _)) = both_ways(&start);
         let only_a: Vec<_> = a.failed.iter().filter(|c| !b.failed.contains(c)).collect();
         let only_b: Vec<_> = b.failed.iter().filter(|c| !a.failed.contains(c)).collect();
         eprintln!(
@@ -377,12 +377,7 @@ fn a_mesh_slide_ends_on_the_step_that_settles_it() {
     for (n, seed) in [(6, 1), (10, 2), (10, 8), (20, 3)] {
         let what = format!("{n}x{n} mesh, seed {seed}");
         let start = lattice(n, seed, 0.6, true, Variant::Solvable);
-        let rows_only = Config {
-            unknowns_side: false,
-            ..Config::default()
-        };
-        let (a, xa) = run(&start, G, &Config::default());
-        let (b, xb) = run(&start, G, &rows_only);
+        let ((a, xa), (b, xb)) = both_ways(&start);
         assert_eq!(a.outcome, Outcome::RedundantOkay, "{what}: {a:?}");
         assert!(a.iterations <= 4, "{what}: {} iterations", a.iterations);
         assert!(a.iterations <= b.iterations, "{what}: {a:?} against {b:?}");
