@@ -94,7 +94,7 @@ fn angle(e: &Equation, x: &[f64], active: &[u16], res: &mut [f64], jac: &mut [f6
     let (ax, ay) = (v(p0[0]) - v(p1[0]), v(p0[1]) - v(p1[1]));
     let (bx, by) = (v(q0[0]) - v(q1[0]), v(q0[1]) - v(q1[1]));
     let (c, s) = (ax * bx + ay * by + 0.0 * 0.0, ax * by - ay * bx);
-    let (_, st, ct) = angle_target(e);
+    let (st, ct) = angle_sin_cos(e);
     let (num, den) = (s * ct - c * st, c * ct + s * st);
     res[0] = num.atan2(den);
     let r2 = num * num + den * den;
@@ -148,18 +148,14 @@ pub(super) fn prepare(e: &mut Equation) {
     }
 }
 
-/// A 2D angle's signed target with its sine and cosine: those [`prepare`] kept while `val`,
-/// the branch and `other` are the ones it saw (the same numbers to the bit), computed
-/// otherwise.
-pub(super) fn angle_target(e: &Equation) -> (f64, f64, f64) {
+/// The sine and cosine of a 2D angle's signed target: those [`prepare`] kept while `val`, the
+/// branch and `other` are the ones it saw (the same numbers to the bit), computed otherwise.
+pub(super) fn angle_sin_cos(e: &Equation) -> (f64, f64) {
     match e.prepared_for {
-        Some((v, c, o)) if v == e.val.to_bits() && c == e.choice && o == e.other => {
-            let [t, s, c] = e.target;
-            (t, s, c)
-        }
+        Some(seen) if seen == (e.val.to_bits(), e.choice, e.other) => (e.target[1], e.target[2]),
         _ => {
             let t = signed_target(e);
-            (t, t.sin(), t.cos())
+            (t.sin(), t.cos())
         }
     }
 }

@@ -163,7 +163,7 @@ pub(super) fn angle<S: Scalar>(e: &Equation, g: &Geo<S>, out: &mut Rows<S>) {
         Some(_) if e.choice != COSINE_FORM => {
             // |a||b| sin(angle) and |a||b| cos(angle): atan2 does not need them normalised.
             let (c, s) = (a.dot(b), a.cross(b).z);
-            let (_, st, ct) = super::fast::angle_target(e);
+            let (st, ct) = super::fast::angle_sin_cos(e);
             out.push(undefined_or(s * ct - c * st, c * ct + s * st));
         }
         _ => out.push(cosine(a, b) - target(e).cos()),
