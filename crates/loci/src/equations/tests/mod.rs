@@ -81,6 +81,8 @@ fn check_residuals(cases: &[Case]) {
                 !r.is_empty() && r.iter().all(|v| v.abs() < 1e-12),
                 "{what}: satisfied configuration gives {r:?}"
             );
+            // The count of residuals, evaluated or known from the kind, is what they are.
+            assert_eq!(one.eq.rows(&one.x(&fx.sys)), r.len(), "{what}");
             // The equation keeps the branch it chose at the satisfied configuration.
             match &b.brk {
                 Break::Set(values) => fx.set(values),
@@ -88,6 +90,7 @@ fn check_residuals(cases: &[Case]) {
                 Break::Flags(o, o2) => (one.eq.other, one.eq.other2) = (*o, *o2),
             }
             let r = one.residuals(&one.x(&fx.sys));
+            assert_eq!(one.eq.rows(&one.x(&fx.sys)), r.len(), "{what}");
             let Expect::Rows(want) = &b.expect;
             assert_close(&what, &r, want, 1e-9);
             assert!(norm(&r) > 1e-3, "{what}: broken configuration gives {r:?}");
