@@ -938,7 +938,7 @@ impl Component {
             // The slide converges linearly where the equations curve much over the distance
             // to the drawing: it gets as many steps as the separate slide would.
             let sliding = fold && damping.is_none() && iterations < MAX_PROJECTION + MAX_RESTORE;
-            let max_r = r.iter().fold(0.0f64, |a, v| larger(a, v.abs()));
+            let max_r = largest_abs(r);
             // Plain steps solve the kept rows only: once those nearly hold and the dropped ones
             // are far off (a mesh whose first steps flipped a triangle: kept rows at 2e-3,
             // dropped ones at 2.5), further plain steps converge to a point where the
@@ -1013,7 +1013,7 @@ impl Component {
                         y[d] = 0.0;
                     }
                     b.copy_from_slice(y);
-                    let b_size = b.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+                    let b_size = largest_abs(b);
                     let target = REFINED * b_size;
                     // `res = b - G y` with `G y = Jn (Jnᵀ y)`, and its largest entry.
                     let residual = |y: &[f64], res: &mut [f64], v: &mut [f64]| {
@@ -1033,7 +1033,7 @@ impl Component {
                         for &d in left_out {
                             res[d] = 0.0;
                         }
-                        res.iter().fold(0.0f64, |a, x| a.max(x.abs()))
+                        largest_abs(res)
                     };
                     // From the last step's solution where it leaves less of `b` to solve: as a
                     // slide settles, `y` settles too (on the multipliers of the nearest
@@ -1408,7 +1408,7 @@ impl Component {
             dependent: 0,
             dependencies: Vec::new(),
             unsatisfied: (0..m).filter(|&i| !(r[i].abs() <= cfg.tolerance)).collect(),
-            residual: r.iter().fold(0.0f64, |a, v| larger(a, v.abs())),
+            residual: largest_abs(r),
             too_large: false,
             marginal: false,
             settled: stopped_settling,
@@ -1483,6 +1483,12 @@ pub(super) fn larger(a: f64, b: f64) -> f64 {
     } else {
         a
     }
+}
+
+/// The largest magnitude in `v` (0 when empty; NaNs ignored, as [`larger`] does).
+#[inline]
+pub(super) fn largest_abs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |a, x| larger(a, x.abs()))
 }
 
 /// A number in [-1, -0.5] or [0.5, 1] that depends only on `c` and `attempt`: directions of

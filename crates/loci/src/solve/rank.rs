@@ -185,7 +185,7 @@ pub(super) fn drop_one_at_a_time(
                 y[d] = 0.0;
             }
             gram.solve(&mut y);
-            let size = y.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+            let size = super::newton::largest_abs(&y);
             if !(size > 0.0 && size.is_finite()) {
                 break;
             }

@@ -21,7 +21,8 @@
 
 use super::gram::{Columns, Gram};
 use super::newton::{
-    generic, stationary, Component, Finish, PROJECTED, SLIDE_NOISE, STALE_RANK, STATIONARY,
+    generic, largest_abs, stationary, Component, Finish, PROJECTED, SLIDE_NOISE, STALE_RANK,
+    STATIONARY,
 };
 use super::rank::{DEPENDENCY_BLOCK, UNION_PROBES};
 use super::Config;
@@ -493,7 +494,7 @@ impl Component {
             dependent,
             dependencies: vec![union],
             unsatisfied: Vec::new(),
-            residual: r.iter().fold(0.0f64, |a, v| a.max(v.abs())),
+            residual: largest_abs(r),
             too_large: false,
             marginal: false,
             settled: false,
