@@ -59,9 +59,13 @@ pub(crate) fn construct(
     // Entities' implicit conditions (unit quaternions, equal arc radii) are part of every
     // sketch: they come first, all together. Then the constraints in the order they were
     // added.
-    let (base, mut order): (Vec<usize>, Vec<usize>) = kernels
+    // Callers list a set in the order of a report (the latest constraints first): sorted
+    // back into the order of the equations, which is the system's.
+    let (mut base, mut order): (Vec<usize>, Vec<usize>) = kernels
         .iter()
         .partition(|&&k| matches!(eqs.kernels[k].owner, Owner::Entity(_)));
+    base.sort_unstable();
+    order.sort_unstable();
     for _ in 0..ROUNDS {
         let mut defs = eqs.kernels.clone();
         let mut values = start.to_vec();

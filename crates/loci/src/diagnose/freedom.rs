@@ -165,7 +165,7 @@ struct Entry {
 /// Context for describing entities.
 struct Ctx<'a> {
     sys: &'a System,
-    eqs: &'a Equations,
+    eqs: &'a Equations<'a>,
     values: &'a [f64],
     vectors: &'a [Vec<f64>],
     /// Spans already computed: a point is both an entity and a part of its lines.

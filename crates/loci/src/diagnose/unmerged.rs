@@ -26,10 +26,17 @@ pub(crate) struct Block {
 }
 
 /// All equations of a group, unmerged, with the sparsity of their Jacobian.
-pub(crate) struct Equations {
+pub(crate) struct Equations<'s> {
+    /// The system and group they were compiled from.
+    pub sys: &'s System,
+    pub group: GroupId,
     pub kernels: Vec<Kernel>,
     /// The kernels of entities' implicit conditions, ascending.
     pub implicit: Vec<usize>,
+    /// Per kernel: the columns of its entity's own parameters (a carried point's
+    /// coordinates, a normal's quaternion), empty for a constraint's kernel or an entity
+    /// without parameters of its own (an arc).
+    pub own_cols: Vec<Vec<u32>>,
     pub blocks: Vec<Block>,
     /// Per parameter (in [`System::params`] order): its column, or [`CONSTANT`].
     pub col_of_param: Vec<u32>,
@@ -60,16 +67,16 @@ impl Linear {
     }
 }
 
-impl Equations {
+impl<'s> Equations<'s> {
     /// Compiles `group` of `sys`; `values` (the starting values) pick branches and the
     /// positions `where_dragged` keeps, exactly as the solver does.
-    pub fn new(sys: &System, group: GroupId, values: &[f64]) -> Result<Self, ModelError> {
+    pub fn new(sys: &'s System, group: GroupId, values: &[f64]) -> Result<Self, ModelError> {
         Self::from_kernels(sys, group, compile_unmerged(sys, group, values, false)?)
     }
 
     /// The equations of the constraints and entities `keep` accepts only.
     pub fn only(
-        sys: &System,
+        sys: &'s System,
         group: GroupId,
         values: &[f64],
         keep: &dyn Fn(Owner) -> bool,
@@ -82,7 +89,7 @@ impl Equations {
     }
 
     fn from_kernels(
-        sys: &System,
+        sys: &'s System,
         group: GroupId,
         kernels: Vec<Kernel>,
     ) -> Result<Self, ModelError> {
@@ -128,9 +135,27 @@ impl Equations {
         let implicit = (0..kernels.len())
             .filter(|&k| matches!(kernels[k].owner, Owner::Entity(_)))
             .collect();
+        let own_cols = kernels
+            .iter()
+            .map(|k| match k.owner {
+                Owner::Entity(e) => sys.entity(e).map_or_else(Vec::new, |ent| {
+                    ent.kind
+                        .params()
+                        .iter()
+                        .filter_map(|&p| sys.param_index(p))
+                        .map(|i| col_of_param[i])
+                        .filter(|&c| c != CONSTANT)
+                        .collect()
+                }),
+                Owner::Constraint(_) => Vec::new(),
+            })
+            .collect();
         Ok(Self {
+            sys,
+            group,
             kernels,
             implicit,
+            own_cols,
             blocks,
             col_of_param,
             param_of_col,

@@ -5,6 +5,7 @@ mod entity;
 mod handle;
 mod index;
 mod param;
+mod part;
 mod system;
 mod validate;
 

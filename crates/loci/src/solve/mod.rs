@@ -91,6 +91,26 @@ pub(crate) fn solve_core(
     Ok((report, values))
 }
 
+/// Whether `group` of `sys` solves as it stands: one solve from its values, as [`solve`]
+/// runs it (equalities merged, carried entities read as expressions) but naming nothing and
+/// building nothing up, for the diagnosis to check a set it is about to call impossible
+/// against what solving the set alone gives.
+pub(crate) fn holds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
+    if sys.validate().is_err() || check_group(sys, group).is_err() {
+        return false;
+    }
+    let cfg = Config {
+        name_conflicts: false,
+        ..cfg.clone()
+    };
+    let mut cache = Cache::default();
+    let solved = solve_values_checked(sys, group, &[], &cfg, &mut cache)
+        .is_ok_and(|(report, _, _)| report.outcome.is_ok());
+    par::discard(std::mem::take(&mut cache.components));
+    par::discard(std::mem::take(&mut cache.kernels));
+    solved
+}
+
 /// The solve of `group` from a solution built up one constraint at a time
 /// ([`crate::diagnose::construct_group`]), when one can be built: its report (its iterations
 /// those of the build too) and values.
