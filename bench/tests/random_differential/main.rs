@@ -16,8 +16,8 @@
 //!
 //! (`LOCI_DIFF_FIRST_SEED` starts elsewhere; `LOCI_DIFF_PYTHON` names another Python with
 //! `slvs`; `LOCI_DIFF_DUMP=DIR` writes each system as a loci JSON problem, `seed-N.json` at
-//! its start and `seed-N.truth.json` at the true configuration, for `loci solve` and
-//! `loci check`.) Without SolveSpace the test says so loudly and still checks loci's half.
+//! its start, `seed-N.truth.json` at the true configuration and `seed-N.restart.json` at the
+//! second start the re-solves take, for `loci solve` and `loci check`.) Without SolveSpace the test says so loudly and still checks loci's half.
 
 mod case;
 mod check;
@@ -184,7 +184,11 @@ fn dump(dir: &std::path::Path, cases: &[case::Case]) {
         for &(p, v) in &c.truth {
             truth.set_value(p, v);
         }
-        for (name, sys) in [("", &c.system), (".truth", &truth)] {
+        let mut restart = c.system.clone();
+        for &(p, v) in &c.restart {
+            restart.set_value(p, v);
+        }
+        for (name, sys) in [("", &c.system), (".truth", &truth), (".restart", &restart)] {
             let problem = loci::format::json::Problem {
                 system: sys.clone(),
                 solve: None,

@@ -21,8 +21,11 @@ fn load(name: &str) -> System {
 }
 
 /// Cases whose right outcome loci does not reach yet, with what it says instead. Each still
-/// runs: it must never claim a solution.
-const NOT_YET: &[(&str, &str)] = &[];
+/// runs: it must never claim a solution, and a satisfiable one never a conflict.
+const NOT_YET: &[(&str, &str)] = &[(
+    "diff_seed202236_restart.json",
+    "did_not_converge: Newton and the builds one constraint at a time all fail from here",
+)];
 
 #[test]
 fn every_known_case_gives_the_right_outcome() {
@@ -57,6 +60,10 @@ fn every_known_case_gives_the_right_outcome() {
         }
         if let Some((_, why)) = NOT_YET.iter().find(|(f, _)| *f == file) {
             assert!(!r.outcome.is_ok(), "{file}: claims a solution ({why})");
+            assert!(
+                want != "solved" || r.outcome != Outcome::Inconsistent,
+                "{file}: satisfiable, but named a conflict: {r:?}"
+            );
             eprintln!("not yet right: {file}: {} ({why})", r.outcome);
             continue;
         }

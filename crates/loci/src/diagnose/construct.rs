@@ -57,15 +57,11 @@ pub(crate) fn construct(
         .with_max_iterations(cfg.max_iterations.min(STEP_ITERATIONS))
         .with_find_failed(false);
     // Entities' implicit conditions (unit quaternions, equal arc radii) are part of every
-    // sketch: they come first, all together. Then the constraints in the order they were
-    // added.
-    // Callers list a set in the order of a report (the latest constraints first): sorted
-    // back into the order of the equations, which is the system's.
-    let (mut base, mut order): (Vec<usize>, Vec<usize>) = kernels
+    // sketch: they come first, all together. Then the constraints in the order given (the
+    // order they were added, for a whole group).
+    let (base, mut order): (Vec<usize>, Vec<usize>) = kernels
         .iter()
         .partition(|&&k| matches!(eqs.kernels[k].owner, Owner::Entity(_)));
-    base.sort_unstable();
-    order.sort_unstable();
     for _ in 0..ROUNDS {
         let mut defs = eqs.kernels.clone();
         let mut values = start.to_vec();

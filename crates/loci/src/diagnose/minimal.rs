@@ -68,9 +68,22 @@ fn check(
     }
     build
         && (starts.last().is_some_and(|start| {
-            construct(eqs, kernels, start, &|_| 1.0, cfg, &mut 0).is_some()
-                || other_turns_hold(eqs, kernels, start, cfg)
+            builds(eqs, kernels, start, cfg) || other_turns_hold(eqs, kernels, start, cfg)
         }) || solves_as_drawn(eqs, kernels, cfg))
+}
+
+/// Whether the set builds up one constraint at a time from `start` ([`construct`]): in the
+/// order given (a report's, the latest constraints first), and failing that in the order the
+/// constraints were added. Each order builds some sets the other cannot: of 20,000 random
+/// sketches and 4,000 random assemblies, one of each was built only in the first, and one
+/// assembly's set only in the second.
+fn builds(eqs: &Equations, kernels: &[usize], start: &[f64], cfg: &Config) -> bool {
+    if construct(eqs, kernels, start, &|_| 1.0, cfg, &mut 0).is_some() {
+        return true;
+    }
+    let mut added = kernels.to_vec();
+    added.sort_unstable();
+    added != kernels && construct(eqs, &added, start, &|_| 1.0, cfg, &mut 0).is_some()
 }
 
 /// Whether the constraints of `kernels`, kept alone in a system of their own (with the
