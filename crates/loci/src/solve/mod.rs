@@ -64,8 +64,7 @@ pub fn solve(
     check_group(sys, group)?;
     let mut cache = Cache::default();
     let report = solve_cached(sys, group, dragged, cfg, &mut cache);
-    par::discard(std::mem::take(&mut cache.components));
-    par::discard(std::mem::take(&mut cache.kernels));
+    cache.discard();
     report
 }
 
@@ -106,8 +105,7 @@ pub(crate) fn holds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     let mut cache = Cache::default();
     let solved = solve_values_checked(sys, group, &[], &cfg, &mut cache)
         .is_ok_and(|(report, _, _)| report.outcome.is_ok());
-    par::discard(std::mem::take(&mut cache.components));
-    par::discard(std::mem::take(&mut cache.kernels));
+    cache.discard();
     solved
 }
 
@@ -176,6 +174,15 @@ struct Cache {
     /// Whether, in the last solve, damped steps of some component stopped short of the
     /// least-squares point they were creeping towards ([`Config::settle`]).
     settled: bool,
+}
+
+impl Cache {
+    /// Drops the cache, its many small components and kernels freed on the thread pool when
+    /// there are many (see [`par::discard`]), so that a one-off solve returns first.
+    fn discard(self) {
+        par::discard(self.components);
+        par::discard(self.kernels);
+    }
 }
 
 /// A reusable solver for one group: the first solve compiles the equations, splits them into
