@@ -30,7 +30,7 @@ mod structure;
 mod tests;
 mod unmerged;
 
-pub(crate) use construct::construct_group;
+pub(crate) use construct::{construct_group, Rescue};
 pub use groups::minimal_groups;
 pub use motion::Motion;
 pub use report::{

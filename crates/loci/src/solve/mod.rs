@@ -82,7 +82,7 @@ pub(crate) fn solve_core(
     let mut cache = Cache::default();
     let (report, values, _) = solve_values_checked(sys, group, dragged, cfg, &mut cache)?;
     if !report.outcome.is_ok() {
-        if let Some((mut again, at)) = constructed(sys, group, dragged, cfg, &mut cache)? {
+        if let Some((mut again, at)) = rescued(sys, group, dragged, cfg, &mut cache)? {
             again.iterations += report.iterations;
             return Ok((again, at));
         }
@@ -109,19 +109,48 @@ pub(crate) fn holds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     solved
 }
 
-/// The solve of `group` from a solution built up one constraint at a time
-/// ([`crate::diagnose::construct_group`]), when one can be built: its report (its iterations
-/// those of the build too) and values.
-/// `cache` then holds the equations compiled at that solution, whose branches (which way an
-/// angle turns) are the ones chosen as each constraint was added.
-fn constructed(
+/// The solve of `group` from a solution found another way when Newton from the drawing
+/// reached none, if one is found: built up one constraint at a time; failing that, built with
+/// steps of least movement from where the sketch stands rather than towards the drawing
+/// (`Config::nearest` off, SolveSpace's steps), as each step's pull back towards the drawing
+/// can hold a constraint that is being added short of holding (of 20,000 random systems, one,
+/// 19 constraints started up to 2.4 off a solution, solved only this way, as SolveSpace solved
+/// it); failing that too, solved whole with some 2D angles turned the other way (see
+/// [`crate::diagnose::Rescue`]).
+fn rescued(
     sys: &System,
     group: GroupId,
     dragged: &[ParamId],
     cfg: &Config,
     cache: &mut Cache,
 ) -> Result<Option<(Report, Vec<f64>)>, SolveError> {
-    let Some((built, building)) = crate::diagnose::construct_group(sys, group, dragged, cfg) else {
+    use crate::diagnose::Rescue;
+    if let Some(found) = constructed(sys, group, dragged, cfg, Rescue::Build, cache)? {
+        return Ok(Some(found));
+    }
+    if cfg.nearest {
+        let least = cfg.clone().with_nearest(false);
+        if let Some(found) = constructed(sys, group, dragged, &least, Rescue::Build, cache)? {
+            return Ok(Some(found));
+        }
+    }
+    constructed(sys, group, dragged, cfg, Rescue::Turn, cache)
+}
+
+/// The solve of `group` from a solution found `how` ([`crate::diagnose::construct_group`]),
+/// when one is found: its report (its iterations those of the search too) and values.
+/// `cache` then holds the equations compiled at that solution, whose branches (which way an
+/// angle turns) are the ones it holds with.
+fn constructed(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    how: crate::diagnose::Rescue,
+    cache: &mut Cache,
+) -> Result<Option<(Report, Vec<f64>)>, SolveError> {
+    let Some((built, building)) = crate::diagnose::construct_group(sys, group, dragged, cfg, how)
+    else {
         return Ok(None);
     };
     *cache = Cache::default();
@@ -295,19 +324,9 @@ fn solve_cached(
             }
         }
         // Nothing shown to fail on its own: Newton from the whole drawing may have folded the
-        // sketch on its way. Build the solution up one constraint at a time instead; and if
-        // that fails too, built with steps of least movement from where the sketch stands
-        // rather than towards the drawing (`Config::nearest` off, SolveSpace's steps): each
-        // step's pull back towards the drawing can hold a constraint that is being added
-        // short of holding. Of 20,000 random systems, one (19 constraints started up to 2.4
-        // off a solution) solved only this way, as SolveSpace solved it.
+        // sketch on its way. Look for a solution another way ([`rescued`]).
         if !proven {
-            let mut built = constructed(sys, group, dragged, cfg, cache)?;
-            if built.is_none() && cfg.nearest {
-                let least = cfg.clone().with_nearest(false);
-                built = constructed(sys, group, dragged, &least, cache)?;
-            }
-            if let Some((mut again, at)) = built {
+            if let Some((mut again, at)) = rescued(sys, group, dragged, cfg, cache)? {
                 again.iterations += report.iterations;
                 (report, values) = (again, at);
             }
