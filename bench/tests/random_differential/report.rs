@@ -274,7 +274,8 @@ pub fn summary(
         &|r| r.loci.is_right() && ss_failed(r),
         10,
     );
-    let mut notes: BTreeMap<String, usize> = BTreeMap::new();
+    // Each kind of note with the seeds it came from, so that a note can be looked at.
+    let mut notes: BTreeMap<String, Vec<u64>> = BTreeMap::new();
     for r in rows {
         for n in &r.notes {
             let kind = if n.starts_with("conflict set") {
@@ -282,11 +283,18 @@ pub fn summary(
             } else {
                 n.clone()
             };
-            *notes.entry(kind).or_default() += 1;
+            notes.entry(kind).or_default().push(r.seed);
         }
     }
     if !notes.is_empty() {
-        let list: Vec<String> = notes.iter().map(|(k, n)| format!("{k}: {n}")).collect();
+        let list: Vec<String> = notes
+            .iter()
+            .map(|(k, seeds)| {
+                let shown: Vec<String> = seeds.iter().take(20).map(u64::to_string).collect();
+                let more = if seeds.len() > 20 { ", ..." } else { "" };
+                format!("{k}: {} (seeds {}{more})", seeds.len(), shown.join(","))
+            })
+            .collect();
         let _ = writeln!(s, "\nnotes (not failures): {}", list.join("; "));
     }
     if verbose {
