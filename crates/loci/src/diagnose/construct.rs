@@ -242,8 +242,17 @@ pub(crate) fn construct_group(
     // and its diagnosis, finding every part of it able to hold, named nothing).
     let mut iterations = 0;
     if how == Rescue::Turn {
-        return turned(&eqs, &kernels, &start, &scale, cfg, &mut iterations)
-            .map(|v| (v, iterations));
+        let turning = turnable(&eqs, &kernels, MAX_TURNED)?;
+        return turned(
+            &eqs,
+            &kernels,
+            &turning,
+            &start,
+            &scale,
+            cfg,
+            &mut iterations,
+        )
+        .map(|v| (v, iterations));
     }
     let mut members: Vec<Member> = kernels.iter().map(|&k| eqs.member(k)).collect();
     members.sort_by(Member::report_order);
@@ -272,29 +281,23 @@ const MAX_TURNED: usize = 4;
 /// The iterations each combination of turns gets in [`turned`].
 const TURNED_ITERATIONS: usize = 100;
 
-/// Values where every equation of `kernels` holds with some of the group's 2D angles turning
-/// the other way, solved whole from `start`; `None` when no combination solves, or when the
-/// group has more than [`MAX_TURNED`] such angles. An angle is drawn with a turn, and the
-/// equations keep it; a sketch drawn far from its dimensions can need an angle to turn the
-/// other way, which Newton cannot reach without passing through a straight angle, nor a build
-/// that adds the angle where the sketch shows the same turn. Fewer angles turned are tried
-/// first. Of 20,000 random sketches from a second start, one (seed 202236) solved only this
-/// way, with the first and third of its four angles turned.
+/// Values where every equation of `kernels` holds with some of the 2D angles of `turning` (as
+/// [`turnable`] gives them) turned the other way, solved whole from `start`; `None` when no
+/// combination solves. An angle is drawn with a turn, and the equations keep it; a sketch
+/// drawn far from its dimensions can need an angle to turn the other way, which Newton cannot
+/// reach without passing through a straight angle, nor a build that adds the angle where the
+/// sketch shows the same turn. Fewer angles turned are tried first. Of 20,000 random sketches
+/// from a second start, one (seed 202236) solved only this way, with the first and third of
+/// its four angles turned.
 fn turned(
     eqs: &Equations,
     kernels: &[usize],
+    turning: &[(usize, Equation)],
     start: &[f64],
     scale_of_param: &dyn Fn(usize) -> f64,
     cfg: &Config,
     iterations: &mut usize,
 ) -> Option<Vec<f64>> {
-    let turning: Vec<(usize, Equation)> = kernels
-        .iter()
-        .filter_map(|&k| other_turn(&eqs.kernels[k].eq).map(|eq| (k, eq)))
-        .collect();
-    if turning.is_empty() || turning.len() > MAX_TURNED {
-        return None;
-    }
     let cfg = &cfg
         .clone()
         .with_max_iterations(cfg.max_iterations.min(TURNED_ITERATIONS))
@@ -302,12 +305,7 @@ fn turned(
     let mut masks: Vec<usize> = (1..1usize << turning.len()).collect();
     masks.sort_by_key(|m| m.count_ones());
     masks.into_iter().find_map(|mask| {
-        let mut defs = eqs.kernels.clone();
-        for (i, (k, eq)) in turning.iter().enumerate() {
-            if mask & (1 << i) != 0 {
-                defs[*k].eq = eq.clone();
-            }
-        }
+        let defs = with_turns(eqs, turning, mask);
         let mut values = start.to_vec();
         solve_alone(
             eqs,
@@ -320,4 +318,33 @@ fn turned(
         )
         .then_some(values)
     })
+}
+
+/// The 2D angles among `kernels` that can turn the other way, each with its equation turned
+/// ([`other_turn`]); `None` when there are none, or more than `most`.
+pub(crate) fn turnable(
+    eqs: &Equations,
+    kernels: &[usize],
+    most: usize,
+) -> Option<Vec<(usize, Equation)>> {
+    let turning: Vec<(usize, Equation)> = kernels
+        .iter()
+        .filter_map(|&k| other_turn(&eqs.kernels[k].eq).map(|eq| (k, eq)))
+        .collect();
+    (!turning.is_empty() && turning.len() <= most).then_some(turning)
+}
+
+/// The kernels of `eqs` with the angles of `turning` whose bits are set in `mask` turned.
+pub(crate) fn with_turns(
+    eqs: &Equations,
+    turning: &[(usize, Equation)],
+    mask: usize,
+) -> Vec<Kernel> {
+    let mut defs = eqs.kernels.clone();
+    for (i, (k, eq)) in turning.iter().enumerate() {
+        if mask & (1 << i) != 0 {
+            defs[*k].eq = eq.clone();
+        }
+    }
+    defs
 }

@@ -2,10 +2,10 @@
 //! solve stopped and from the user's drawing, and a deletion filter that removes every member
 //! the conflict does not need.
 
-use super::construct::construct;
+use super::construct::{construct, turnable, with_turns};
 use super::report::Member;
 use super::unmerged::{Equations, CONSTANT};
-use crate::equations::{Equation, Kernel, Owner, Rows};
+use crate::equations::{Kernel, Owner, Rows};
 use crate::solve::newton::{Component, Scratch};
 use crate::solve::Config;
 use std::collections::{HashMap, HashSet};
@@ -161,21 +161,12 @@ const MAX_TURNING: usize = 3;
 /// of turning its angles lets the set hold (two angles that add up to a right angle between
 /// a horizontal and a vertical line hold only when they turn the same way).
 fn other_turns_hold(eqs: &Equations, kernels: &[usize], start: &[f64], cfg: &Config) -> bool {
-    let turning: Vec<(usize, Equation)> = kernels
-        .iter()
-        .filter_map(|&k| super::construct::other_turn(&eqs.kernels[k].eq).map(|eq| (k, eq)))
-        .collect();
-    if turning.is_empty() || turning.len() > MAX_TURNING {
+    let Some(turning) = turnable(eqs, kernels, MAX_TURNING) else {
         return false;
-    }
+    };
     let mut scratch = Scratch::default();
     (1..1usize << turning.len()).any(|mask| {
-        let mut defs = eqs.kernels.clone();
-        for (i, (k, eq)) in turning.iter().enumerate() {
-            if mask & (1 << i) != 0 {
-                defs[*k].eq = eq.clone();
-            }
-        }
+        let defs = with_turns(eqs, &turning, mask);
         let mut v = start.to_vec();
         matches!(
             solve_set(
