@@ -205,21 +205,16 @@ pub(crate) fn construct_group(
     if constraints > CONSTRUCT_UP_TO {
         return None;
     }
-    // Likewise a group without 2D angles to turn (an assembly, a 3D sketch), or with too many.
-    if how == Rescue::Turn {
-        let angles = sys
-            .constraints()
-            .iter()
-            .filter(|c| {
-                c.group == group
-                    && !c.reference
-                    && c.workplane.is_some()
-                    && matches!(c.kind, ConstraintKind::Angle | ConstraintKind::EqualAngle)
-            })
-            .count();
-        if angles == 0 || angles > MAX_TURNED {
-            return None;
-        }
+    // Likewise a group without 2D angles to turn (an assembly, a 3D sketch).
+    if how == Rescue::Turn
+        && !sys.constraints().iter().any(|c| {
+            c.group == group
+                && !c.reference
+                && c.workplane.is_some()
+                && matches!(c.kind, ConstraintKind::Angle | ConstraintKind::EqualAngle)
+        })
+    {
+        return None;
     }
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let eqs = Equations::new(sys, group, &start).ok()?;
@@ -232,14 +227,6 @@ pub(crate) fn construct_group(
             1.0
         }
     };
-    // Newton on the equations as written first, from the drawing, as the diagnosis checks
-    // whether a set can hold (its rows in the order of a report: the latest constraints
-    // first, entities' conditions last): one solve, where the build is one per constraint.
-    // The solve that failed took other steps, on equations merged by substitution and in
-    // another order, which decides the rows dropped where some depend on others; the group
-    // should not be given up on where the diagnosis's own check of it finds a solution (a
-    // random assembly of five parts and twelve mates stopped 0.035 off after 10 iterations,
-    // and its diagnosis, finding every part of it able to hold, named nothing).
     let mut iterations = 0;
     if how == Rescue::Turn {
         let turning = turnable(&eqs, &kernels, MAX_TURNED)?;
@@ -254,6 +241,14 @@ pub(crate) fn construct_group(
         )
         .map(|v| (v, iterations));
     }
+    // Newton on the equations as written first, from the drawing, as the diagnosis checks
+    // whether a set can hold (its rows in the order of a report: the latest constraints
+    // first, entities' conditions last): one solve, where the build is one per constraint.
+    // The solve that failed took other steps, on equations merged by substitution and in
+    // another order, which decides the rows dropped where some depend on others; the group
+    // should not be given up on where the diagnosis's own check of it finds a solution (a
+    // random assembly of five parts and twelve mates stopped 0.035 off after 10 iterations,
+    // and its diagnosis, finding every part of it able to hold, named nothing).
     let mut members: Vec<Member> = kernels.iter().map(|&k| eqs.member(k)).collect();
     members.sort_by(Member::report_order);
     members.dedup();
