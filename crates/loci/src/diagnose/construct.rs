@@ -159,7 +159,7 @@ fn add(
 
 /// A 2D angle (or equal angles) turning the other way: the other branch [`Equation::choose`]
 /// picks between.
-pub(crate) fn other_turn(eq: &Equation) -> Option<Equation> {
+fn other_turn(eq: &Equation) -> Option<Equation> {
     let turns = matches!(
         eq.kind,
         EqKind::Constraint(ConstraintKind::Angle | ConstraintKind::EqualAngle)
