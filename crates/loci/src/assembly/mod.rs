@@ -29,6 +29,7 @@ pub mod angle;
 mod build;
 mod compile;
 mod component;
+mod confirm;
 mod error;
 mod freedom;
 mod mate;
@@ -45,6 +46,7 @@ pub use report::{AssemblyReport, ComponentReport, MateReport, MateStatus};
 pub use stepped::Iteration;
 
 use crate::{diagnose, Config, GroupId, Member, Outcome, Solver};
+use confirm::Checked;
 use prim::{Prim, World};
 use serde::{Deserialize, Serialize};
 
@@ -288,6 +290,12 @@ impl Assembly {
     /// # Errors
     /// A malformed assembly (duplicate names or ids, bad poses or options).
     pub fn solve(&mut self) -> Result<AssemblyReport, AssemblyError> {
+        self.solve_checked(true)
+    }
+
+    /// [`Assembly::solve`]; a named conflict is checked by solving its mates alone
+    /// ([`confirm`]) when `check`.
+    fn solve_checked(&mut self, check: bool) -> Result<AssemblyReport, AssemblyError> {
         self.check()?;
         let o = &self.options;
         if !(o.tolerance > 0.0 && o.tolerance.is_finite()) {
@@ -441,6 +449,29 @@ impl Assembly {
                 }
             }
         };
+        // A named set is checked by solving its mates alone, as an assembly of their own.
+        let named = check
+            && diag
+                .as_ref()
+                .is_some_and(|d| d.outcome == Outcome::Inconsistent)
+            && !conflicts.is_empty();
+        let mut disproved = false;
+        let conflicts = if named {
+            match self.check_conflicts(conflicts)? {
+                Checked::Confirmed(sets) => sets,
+                Checked::Disproved => {
+                    disproved = true;
+                    Vec::new()
+                }
+                Checked::Solved(solved) => {
+                    let (again, report) = *solved;
+                    *self = again;
+                    return Ok(confirm::as_from_start(report, &holds_before));
+                }
+            }
+        } else {
+            conflicts
+        };
         let in_conflict: Vec<bool> = (0..ids.len())
             .map(|i| conflicts.iter().any(|s| s.contains(&i)))
             .collect();
@@ -540,7 +571,11 @@ impl Assembly {
                 .collect()
         };
         Ok(AssemblyReport {
-            outcome: diag.as_ref().map_or(report.outcome, |d| d.outcome),
+            outcome: if disproved {
+                Outcome::DidNotConverge
+            } else {
+                diag.as_ref().map_or(report.outcome, |d| d.outcome)
+            },
             dof: diag.as_ref().map_or(report.dof, |d| d.dof),
             iterations: report.iterations,
             residual: report.residual,

@@ -1,0 +1,89 @@
+//! A conflict named among mates, checked the way a user would check it before it is reported:
+//! its mates alone, on the same components from the same poses, solved as an assembly of their
+//! own.
+//!
+//! The core confirms a conflict by solving its constraints alone from where the whole assembly
+//! started, after the whole assembly's prealignment. Solving is local, so a set can fail from
+//! there and still hold: alone, its own prealignment turns the components another way, and
+//! the solve finds a placement where every one of its mates holds. Such a set is no conflict,
+//! and that placement is a better start for the whole assembly: solved again from it, the
+//! assembly either solves, or fails naming a set that is checked in turn, a few rounds at
+//! most. A failure whose every named set holds alone names none: the outcome is then
+//! `did_not_converge`, not a conflict loci knows to be false.
+
+use super::{Assembly, AssemblyError, AssemblyReport, MateStatus, Pose};
+
+/// How many times an assembly is solved again from the placement of a set that held alone.
+const MAX_ROUNDS: usize = 3;
+
+/// What checking the named conflicts found.
+pub(super) enum Checked {
+    /// These sets (mate indices), each failing alone from the present poses: the first named,
+    /// or those of a solve again from the placement of a set that held alone.
+    Confirmed(Vec<Vec<usize>>),
+    /// The whole assembly solved from the placement of a set that held alone.
+    Solved(Box<(Assembly, AssemblyReport)>),
+    /// Every round named a set that held alone, or named none.
+    Disproved,
+}
+
+impl Assembly {
+    /// Checks `sets` (mate indices), each by solving its mates alone from the components'
+    /// present poses. From the placement of one that holds, the whole assembly is solved
+    /// again, and the sets that solve names are checked in turn, from the same present poses.
+    pub(super) fn check_conflicts(&self, sets: Vec<Vec<usize>>) -> Result<Checked, AssemblyError> {
+        let mut sets = sets;
+        for _ in 0..MAX_ROUNDS {
+            let mut placed = None;
+            for set in &sets {
+                placed = self.holds_alone(set)?;
+                if placed.is_some() {
+                    break;
+                }
+            }
+            let Some(placed) = placed else {
+                return Ok(Checked::Confirmed(sets));
+            };
+            let mut again = self.clone();
+            for (c, p) in again.components.iter_mut().zip(&placed) {
+                c.pose = *p;
+            }
+            let report = again.solve_checked(false)?;
+            if report.outcome.is_ok() {
+                return Ok(Checked::Solved(Box::new((again, report))));
+            }
+            let index = |id: &String| self.mates.iter().position(|m| &m.id == id);
+            sets = report
+                .conflicts
+                .iter()
+                .map(|s| s.iter().filter_map(index).collect())
+                .collect();
+            if sets.is_empty() {
+                break;
+            }
+        }
+        Ok(Checked::Disproved)
+    }
+
+    /// The placement where the mates `set` all hold, solved alone from the present poses
+    /// without a diagnosis, if there is one.
+    fn holds_alone(&self, set: &[usize]) -> Result<Option<Vec<Pose>>, AssemblyError> {
+        let mut alone = self.clone();
+        alone.mates = set.iter().map(|&i| self.mates[i].clone()).collect();
+        alone.options.diagnose = false;
+        let report = alone.solve_checked(false)?;
+        Ok((report.outcome.is_ok() && report.all_hold())
+            .then(|| report.components.iter().map(|c| c.pose).collect()))
+    }
+}
+
+/// The report of an assembly solved again from another placement, told as the solve from
+/// the user's poses: a mate that did not hold there was adjusted, not already satisfied.
+pub(super) fn as_from_start(mut report: AssemblyReport, held: &[bool]) -> AssemblyReport {
+    for (m, &held) in report.mates.iter_mut().zip(held) {
+        if m.status == MateStatus::Satisfied && !held {
+            m.status = MateStatus::Adjusted;
+        }
+    }
+    report
+}
