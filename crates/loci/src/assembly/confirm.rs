@@ -4,8 +4,9 @@
 //!
 //! The core confirms a conflict by solving its constraints alone from where the whole assembly
 //! started, after the whole assembly's prealignment. Solving is local, so a set can fail from
-//! there and still hold: alone, its own prealignment turns the components another way, and
-//! the solve finds a placement where every one of its mates holds. Such a set is no conflict,
+//! there and still hold: alone, its mates are prealigned for themselves and solved without the
+//! unknowns of references they do not use, and the solve can find a placement where every one
+//! of them holds. Such a set is no conflict,
 //! and that placement is a better start for the whole assembly: solved again from it, the
 //! assembly either solves, or fails naming a set that is checked in turn, a few rounds at
 //! most. A failure whose every named set holds alone names none: the outcome is then

@@ -895,9 +895,9 @@ struct Seen {
 /// Cases beyond the default count that the default run checks too: each once named a set
 /// of mates impossible that solves when kept alone (the lengthened distance of 1344 with
 /// three mates, 1487 with eight, 1554 with seven, 3632 with nine). In the last five the set
-/// failed inside the whole assembly and held alone, where its own prealignment turned the
-/// components another way; solved again from there, four name a set that fails alone, and
-/// 3383 names none (every set it names holds alone).
+/// failed inside the whole assembly and held alone, as an assembly of its own mates; solved
+/// again from there, four name a set that fails alone, and 3383 names none (every set it
+/// names holds alone).
 const PINNED: [u64; 9] = [1344, 1487, 1554, 3632, 2547, 3383, 4538, 6293, 7906];
 
 /// Runs the cases (or the one `LOCI_RANDOM_ASSEMBLY` names, printed) and fails on any finding.
