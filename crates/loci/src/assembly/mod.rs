@@ -457,7 +457,7 @@ impl Assembly {
             && !conflicts.is_empty();
         let mut disproved = false;
         let conflicts = if named {
-            match self.check_conflicts(conflicts)? {
+            match self.check_conflicts(conflicts) {
                 Checked::Confirmed(sets) => sets,
                 Checked::Disproved => {
                     disproved = true;
