@@ -32,10 +32,20 @@ impl Assembly {
     /// Checks `sets` (mate indices), each by solving its mates alone from the components'
     /// present poses. From the placement of one that holds, the whole assembly is solved
     /// again, and the sets that solve names are checked in turn, from the same present poses.
-    pub(super) fn check_conflicts(&self, sets: Vec<Vec<usize>>) -> Checked {
+    /// `solved[i]` says whether mate `i` gave the solve equations: a set holding every such
+    /// mate is the assembly as solved, whose solve and diagnosis have failed already.
+    pub(super) fn check_conflicts(&self, sets: Vec<Vec<usize>>, solved: &[bool]) -> Checked {
+        let whole = |set: &Vec<usize>| (0..solved.len()).all(|i| !solved[i] || set.contains(&i));
         let mut sets = sets;
         for round in 0..=MAX_ROUNDS {
-            let Some(placed) = sets.iter().find_map(|s| self.holds_alone(s)) else {
+            let holds = |set: &Vec<usize>| {
+                if whole(set) {
+                    None
+                } else {
+                    self.holds_alone(set)
+                }
+            };
+            let Some(placed) = sets.iter().find_map(holds) else {
                 return Checked::Confirmed(sets);
             };
             if round == MAX_ROUNDS {

@@ -457,7 +457,11 @@ impl Assembly {
             && !conflicts.is_empty();
         let mut disproved = false;
         let conflicts = if named {
-            match self.check_conflicts(conflicts) {
+            let solved: Vec<bool> = compiled
+                .iter()
+                .map(|c| c.as_ref().is_ok_and(|p| active(p)))
+                .collect();
+            match self.check_conflicts(conflicts, &solved) {
                 Checked::Confirmed(sets) => sets,
                 Checked::Disproved => {
                     disproved = true;
