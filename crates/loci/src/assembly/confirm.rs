@@ -100,3 +100,53 @@ pub(super) fn as_from_start(mut report: AssemblyReport, held: &[bool]) -> Assemb
     }
     report
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assembly::MateReport;
+    use crate::Outcome;
+
+    fn mate(id: &str, status: MateStatus) -> MateReport {
+        MateReport {
+            id: id.into(),
+            kind: "distance".into(),
+            status,
+            value: Some(1.0),
+            error: 0.0,
+            message: String::new(),
+            limit_violated: false,
+        }
+    }
+
+    #[test]
+    fn a_mate_satisfied_only_at_the_new_start_reads_adjusted() {
+        let report = AssemblyReport {
+            outcome: Outcome::Okay,
+            dof: 0,
+            iterations: 3,
+            residual: 0.0,
+            mates: vec![
+                mate("held", MateStatus::Satisfied),
+                mate("moved", MateStatus::Satisfied),
+                mate("solved", MateStatus::Adjusted),
+                mate("spare", MateStatus::Redundant),
+            ],
+            components: Vec::new(),
+            conflicts: Vec::new(),
+            redundant: Vec::new(),
+        };
+        let told = as_from_start(report, &[true, false, false, false]);
+        let statuses: Vec<MateStatus> = told.mates.iter().map(|m| m.status).collect();
+        assert_eq!(
+            statuses,
+            [
+                MateStatus::Satisfied,
+                MateStatus::Adjusted,
+                MateStatus::Adjusted,
+                MateStatus::Redundant
+            ]
+        );
+        assert_eq!(told.iterations, 3);
+    }
+}
