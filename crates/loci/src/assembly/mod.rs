@@ -467,8 +467,8 @@ impl Assembly {
                     disproved = true;
                     Vec::new()
                 }
-                Checked::Solved(solved) => {
-                    let (again, report) = *solved;
+                Checked::Solved(found) => {
+                    let (again, report) = *found;
                     *self = again;
                     return Ok(confirm::as_from_start(report, &holds_before));
                 }
