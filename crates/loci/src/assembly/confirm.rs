@@ -34,17 +34,16 @@ impl Assembly {
     /// again, and the sets that solve names are checked in turn, from the same present poses.
     /// `solved[i]` says whether mate `i` gave the solve equations: a set holding every such
     /// mate is the assembly as solved, whose solve and diagnosis have failed already.
-    pub(super) fn check_conflicts(&self, sets: Vec<Vec<usize>>, solved: &[bool]) -> Checked {
-        let whole = |set: &Vec<usize>| (0..solved.len()).all(|i| !solved[i] || set.contains(&i));
-        let mut sets = sets;
+    pub(super) fn check_conflicts(&self, mut sets: Vec<Vec<usize>>, solved: &[bool]) -> Checked {
+        let holds = |set: &Vec<usize>| {
+            let whole = (0..solved.len()).all(|i| !solved[i] || set.contains(&i));
+            if whole {
+                None
+            } else {
+                self.holds_alone(set)
+            }
+        };
         for round in 0..=MAX_ROUNDS {
-            let holds = |set: &Vec<usize>| {
-                if whole(set) {
-                    None
-                } else {
-                    self.holds_alone(set)
-                }
-            };
             let Some(placed) = sets.iter().find_map(holds) else {
                 return Checked::Confirmed(sets);
             };
