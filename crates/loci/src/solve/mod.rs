@@ -109,6 +109,32 @@ pub(crate) fn holds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     solved
 }
 
+/// Whether `group` of `sys` solves when built up one constraint at a time with steps of least
+/// movement from where the sketch stands (`Config::nearest` off, SolveSpace's steps), the
+/// second of the ways [`rescued`] looks for a solution, and the one the diagnosis's own checks
+/// of a set do not take: the last check of a set before it is named.
+pub(crate) fn builds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
+    if sys.validate().is_err() || check_group(sys, group).is_err() {
+        return false;
+    }
+    let least = Config {
+        name_conflicts: false,
+        ..cfg.clone().with_nearest(false)
+    };
+    let mut cache = Cache::default();
+    let built = constructed(
+        sys,
+        group,
+        &[],
+        &least,
+        crate::diagnose::Rescue::Build,
+        &mut cache,
+    )
+    .is_ok_and(|found| found.is_some());
+    cache.discard();
+    built
+}
+
 /// The solve of `group` from a solution found another way when Newton from the drawing
 /// reached none, if one is found: built up one constraint at a time; failing that, built with
 /// steps of least movement from where the sketch stands rather than towards the drawing
