@@ -7,8 +7,8 @@
 //!
 //! By default the committed problem files are checked: the examples, the known cases and the
 //! fuzzers' seeds. `LOCI_NAMED_SETS_DIR=DIR` checks every file of `DIR` instead, such as the
-//! JSON fuzzer's working corpus (`fuzz/work/corpus/json`, 725 files: 351 variants named a set,
-//! checked in about two minutes):
+//! JSON fuzzer's working corpus (`fuzz/work/corpus/json`, 725 files and their variants: 472
+//! named sets, checked in 70 s):
 //!
 //! ```text
 //! LOCI_NAMED_SETS_DIR=fuzz/work/corpus/json cargo test --release -p loci --test named_sets -- --nocapture
@@ -90,7 +90,17 @@ fn check(path: &Path) -> (usize, Vec<String>) {
 }
 
 fn files() -> Vec<PathBuf> {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let root = root.canonicalize().unwrap_or(root);
     if let Some(dir) = std::env::var_os("LOCI_NAMED_SETS_DIR") {
+        // Relative to the workspace, as the command in the docs gives it (tests run in the
+        // crate's directory).
+        let dir = PathBuf::from(dir);
+        let dir = if dir.is_relative() && !dir.exists() {
+            root.join(dir)
+        } else {
+            dir
+        };
         let mut all: Vec<PathBuf> = std::fs::read_dir(dir)
             .expect("LOCI_NAMED_SETS_DIR is a directory")
             .filter_map(|e| e.ok().map(|e| e.path()))
@@ -98,8 +108,6 @@ fn files() -> Vec<PathBuf> {
         all.sort();
         return all;
     }
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let root = root.canonicalize().unwrap_or(root);
     let mut all = Vec::new();
     for dir in [
         "examples",
