@@ -8,7 +8,7 @@ use super::unmerged::{Equations, CONSTANT};
 use crate::equations::{Kernel, Owner, Rows};
 use crate::solve::newton::{Component, Scratch};
 use crate::solve::Config;
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
 
 /// Whether the equations of `kernels` can all hold: Newton on them alone converges from one
 /// of `starts` (each a value for every parameter: where the solve stopped, the drawing), or
@@ -281,7 +281,7 @@ fn solve_set(
     scratch: &mut Scratch,
     iterations: &mut usize,
 ) -> Alone {
-    let mut local: HashMap<u32, u32> = HashMap::new();
+    let mut local: HashMap<u32, u32> = HashMap::default();
     let mut globals = Vec::new();
     for &k in kernels {
         for &c in &eqs.blocks[k].cols {

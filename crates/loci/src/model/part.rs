@@ -1,7 +1,7 @@
 //! A part of a system: some of its constraints and entities, with everything they refer to.
 
 use super::{ConstraintId, EntityId, System};
-use std::collections::HashSet;
+use rustc_hash::FxHashSet as HashSet;
 
 impl System {
     /// The constraints `constraints` and entities `entities` of this system as a system of
@@ -10,13 +10,13 @@ impl System {
     /// user who kept only those constraints would solve. `None` if rebuilding fails, which a
     /// valid system never does.
     pub(crate) fn part(&self, constraints: &[ConstraintId], entities: &[EntityId]) -> Option<Self> {
-        let mut seen: HashSet<EntityId> = HashSet::new();
+        let mut seen: HashSet<EntityId> = HashSet::default();
         let mut stack: Vec<EntityId> = entities.to_vec();
         for c in constraints.iter().filter_map(|&h| self.constraint(h)) {
             stack.extend(c.fields().into_iter().flatten());
             stack.extend(c.workplane);
         }
-        let mut params = HashSet::new();
+        let mut params = HashSet::default();
         while let Some(h) = stack.pop() {
             if !seen.insert(h) {
                 continue;
