@@ -110,27 +110,14 @@ pub(crate) fn holds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
 }
 
 /// Whether `group` of `sys` solves when built up one constraint at a time with steps of least
-/// movement from where the sketch stands (`Config::nearest` off, SolveSpace's steps), the
-/// second of the ways [`rescued`] looks for a solution, and the one the diagnosis's own checks
-/// of a set do not take: the last check of a set before it is named.
+/// movement ([`built_least`]), the one way [`rescued`] looks for a solution that the
+/// diagnosis's own checks of a set do not take: the last check of a set before it is named.
 pub(crate) fn builds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     if sys.validate().is_err() || check_group(sys, group).is_err() {
         return false;
     }
-    let least = Config {
-        name_conflicts: false,
-        ..cfg.clone().with_nearest(false)
-    };
     let mut cache = Cache::default();
-    let built = constructed(
-        sys,
-        group,
-        &[],
-        &least,
-        crate::diagnose::Rescue::Build,
-        &mut cache,
-    )
-    .is_ok_and(|found| found.is_some());
+    let built = built_least(sys, group, &[], cfg, &mut cache).is_ok_and(|found| found.is_some());
     cache.discard();
     built
 }
@@ -155,12 +142,31 @@ fn rescued(
         return Ok(Some(found));
     }
     if cfg.nearest {
-        let least = cfg.clone().with_nearest(false);
-        if let Some(found) = constructed(sys, group, dragged, &least, Rescue::Build, cache)? {
+        if let Some(found) = built_least(sys, group, dragged, cfg, cache)? {
             return Ok(Some(found));
         }
     }
     constructed(sys, group, dragged, cfg, Rescue::Turn, cache)
+}
+
+/// [`constructed`] by the build one constraint at a time with steps of least movement from
+/// where the sketch stands (`Config::nearest` off, SolveSpace's steps).
+fn built_least(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    cache: &mut Cache,
+) -> Result<Option<(Report, Vec<f64>)>, SolveError> {
+    let least = cfg.clone().with_nearest(false);
+    constructed(
+        sys,
+        group,
+        dragged,
+        &least,
+        crate::diagnose::Rescue::Build,
+        cache,
+    )
 }
 
 /// The solve of `group` from a solution found `how` ([`crate::diagnose::construct_group`]),
