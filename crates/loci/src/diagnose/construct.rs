@@ -62,28 +62,39 @@ pub(crate) fn construct(
     let (base, mut order): (Vec<usize>, Vec<usize>) = kernels
         .iter()
         .partition(|&&k| matches!(eqs.kernels[k].owner, Owner::Entity(_)));
+    // Where they hold, solved once: every order starts from there, with the same equations.
+    let mut from = start.to_vec();
+    if !base.is_empty()
+        && !solve_alone(
+            eqs,
+            &eqs.kernels,
+            &base,
+            &mut from,
+            scale_of_param,
+            cfg,
+            iterations,
+        )
+    {
+        return None;
+    }
     for _ in 0..ROUNDS {
         let mut defs = eqs.kernels.clone();
-        let mut values = start.to_vec();
+        let mut values = from.clone();
         let mut have = base.clone();
-        if !have.is_empty()
-            && !solve_alone(
-                eqs,
-                &defs,
-                &have,
-                &mut values,
-                scale_of_param,
-                cfg,
-                iterations,
-            )
-        {
-            return None;
-        }
-        let mut pending = order.clone();
+        // Each constraint still to add, with the number of constraints added when it last
+        // failed: tried again with nothing added since, it would start from the same values
+        // with the same equations and fail the same way (a conflict's last member, the most
+        // expensive step of a build that cannot succeed, was solved twice each order).
+        let mut pending: Vec<(usize, Option<usize>)> = order.iter().map(|&k| (k, None)).collect();
+        let mut added = 0usize;
         loop {
             let mut progressed = false;
             let mut rest = Vec::new();
-            for k in pending {
+            for (k, failed_at) in pending {
+                if failed_at == Some(added) {
+                    rest.push((k, failed_at));
+                    continue;
+                }
                 have.push(k);
                 if add(
                     eqs,
@@ -96,9 +107,10 @@ pub(crate) fn construct(
                     iterations,
                 ) {
                     progressed = true;
+                    added += 1;
                 } else {
                     have.pop();
-                    rest.push(k);
+                    rest.push((k, Some(added)));
                 }
             }
             pending = rest;
@@ -110,6 +122,7 @@ pub(crate) fn construct(
             return Some(values);
         }
         // Next time from the drawing with the ones that could not be added first.
+        let pending: Vec<usize> = pending.into_iter().map(|(k, _)| k).collect();
         let mut next = pending.clone();
         next.extend(order.iter().filter(|k| !pending.contains(k)));
         if next == order {
