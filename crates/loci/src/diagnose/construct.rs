@@ -9,9 +9,9 @@
 //! with the least movement, keeps every intermediate sketch a solution of the constraints
 //! added so far, so each step starts near a solution: this is how the sketch would move if
 //! the user had added the constraints one by one. A constraint that cannot be added where it
-//! comes is tried again after the others; when some still cannot be added, the whole build
-//! starts again from the drawing with them first (the order matters: a dimension added early
-//! can choose the branch a later one needs).
+//! comes is tried again once others have been added; when some still cannot be added, the
+//! whole build starts again from the drawing with them first (the order matters: a dimension
+//! added early can choose the branch a later one needs).
 //!
 //! On a sketch whose constraints truly conflict, some constraint can never be added and the
 //! build gives up after [`ROUNDS`] orders; it is only tried on groups of at most
