@@ -393,3 +393,27 @@ fn an_assembly_the_diagnosis_can_solve_is_solved() {
         assert_eq!(asm.components[0].pose, grounded_before);
     }
 }
+
+/// Seven mates named as a conflict where six of them, a perpendicular mate left out, cannot
+/// hold either (case 7935 of the random assemblies, its distance lengthened). The core had
+/// shown its set of constraints to fail whole, not shrunk it (not verified), and the
+/// assembly passed its mates on as if they were minimal. Now such a set is shrunk among its
+/// mates, and the set named is the one the six alone are named as.
+#[test]
+fn a_conflict_the_core_did_not_shrink_is_shrunk_among_mates() {
+    let text = include_str!("../data/assembly/unshrunk_conflict.json");
+    let six = ["m0", "m2", "m3", "m4", "m5", "longer"]
+        .map(String::from)
+        .to_vec();
+    let mut asm: Assembly = serde_json::from_str(text).unwrap();
+    let r = asm.solve().unwrap();
+    assert_eq!(r.outcome, loci::Outcome::Inconsistent, "{r}");
+    assert_eq!(r.conflicts, vec![six.clone()], "{r}");
+    assert_ne!(r.mate("m1").unwrap().status, MateStatus::Conflicting, "{r}");
+    // The six alone: the same conflict.
+    let mut alone: Assembly = serde_json::from_str(text).unwrap();
+    alone.mates.retain(|m| m.id != "m1");
+    let r = alone.solve().unwrap();
+    assert_eq!(r.outcome, loci::Outcome::Inconsistent, "{r}");
+    assert_eq!(r.conflicts, vec![six], "{r}");
+}
