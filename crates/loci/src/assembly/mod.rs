@@ -844,9 +844,10 @@ fn mates_of(owner: &[usize], members: &[Member]) -> Vec<usize> {
 /// distance, where the fastened joint and the distance conflict alone): the mates are then
 /// shrunk whole ([`crate::minimal_groups`]). A set that holds each of its mates whole is
 /// minimal among mates already, if the core verified it minimal among its constraints. One it
-/// did not verify (shown to fail whole, never shrunk) is shrunk among mates too: a random
-/// assembly's seven mates were named, yet six of them, a perpendicular mate left out, could
-/// not hold either (loci named those six when they were solved alone).
+/// did not verify (the solver's own list, given when every set the core shrank was found to
+/// hold alone) is shrunk among mates too: a random assembly's seven mates were named, yet six
+/// of them, a perpendicular mate left out, could not hold either (loci named those six when
+/// they were solved alone).
 fn conflict_mates(
     sys: &crate::System,
     group: GroupId,

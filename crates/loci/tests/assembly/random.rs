@@ -927,7 +927,7 @@ struct Seen {
 /// failed inside the whole assembly and held alone, as an assembly of its own mates; solved
 /// again from there, four name a set that fails alone, and 3383 names none (every set it
 /// names holds alone). 7935 named seven mates, six of which could not hold either: the core
-/// had shown its set to fail, not shrunk it, and the mates were not shrunk in its place.
+/// gave a set it had not shrunk, and the mates were not shrunk in its place.
 const PINNED: [u64; 10] = [1344, 1487, 1554, 3632, 2547, 3383, 4538, 6293, 7906, 7935];
 
 /// Runs the cases (or the one `LOCI_RANDOM_ASSEMBLY` names, printed) and fails on any finding.

@@ -395,10 +395,10 @@ fn an_assembly_the_diagnosis_can_solve_is_solved() {
 }
 
 /// Seven mates named as a conflict where six of them, a perpendicular mate left out, cannot
-/// hold either (case 7935 of the random assemblies, its distance lengthened). The core had
-/// shown its set of constraints to fail whole, not shrunk it (not verified), and the
-/// assembly passed its mates on as if they were minimal. Now such a set is shrunk among its
-/// mates, and the set named is the one the six alone are named as.
+/// hold either (case 7935 of the random assemblies, its distance lengthened). The set the
+/// core shrank held alone when built up, so it gave the solver's own list of constraints, not
+/// verified minimal, and the assembly passed its mates on as if they were minimal. Now such a
+/// set is shrunk among its mates, and the set named is the one the six alone are named as.
 #[test]
 fn a_conflict_the_core_did_not_shrink_is_shrunk_among_mates() {
     let text = include_str!("../data/assembly/unshrunk_conflict.json");
