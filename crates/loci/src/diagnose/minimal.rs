@@ -5,7 +5,7 @@
 use super::construct::{construct, turnable, with_turns};
 use super::report::Member;
 use super::unmerged::{Equations, CONSTANT};
-use crate::equations::{Kernel, Owner, Rows};
+use crate::equations::{Kernel, Rows};
 use crate::solve::newton::{Component, Scratch};
 use crate::solve::Config;
 use rustc_hash::{FxHashMap as HashMap, FxHashSet as HashSet};
@@ -94,16 +94,7 @@ fn builds(eqs: &Equations, kernels: &[usize], start: &[f64], cfg: &Config) -> bo
 /// assembly's lengthened distance with five mates was named impossible after the checks above
 /// failed, and those mates alone solved in 48 iterations.
 fn solves_as_drawn(eqs: &Equations, kernels: &[usize], cfg: &Config) -> bool {
-    let mut constraints = Vec::new();
-    let mut entities = Vec::new();
-    for &k in kernels {
-        match eqs.kernels[k].owner {
-            Owner::Constraint(c) => constraints.push(c),
-            Owner::Entity(e) => entities.push(e),
-        }
-    }
-    eqs.sys
-        .part(&constraints, &entities)
+    super::kept_alone(eqs.sys, kernels.iter().map(|&k| eqs.member(k)))
         .is_some_and(|part| crate::solve::holds_alone(&part, eqs.group, cfg))
 }
 

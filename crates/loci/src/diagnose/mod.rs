@@ -375,16 +375,22 @@ pub(crate) fn name_conflicts(
 /// parameters they refer to), solve when built up one constraint at a time with SolveSpace's
 /// steps ([`crate::solve::builds_alone`]).
 fn built_alone(sys: &System, group: GroupId, set: &[Member], cfg: &Config) -> bool {
+    kept_alone(sys, set.iter().copied())
+        .is_some_and(|part| crate::solve::builds_alone(&part, group, cfg))
+}
+
+/// The members of a set kept alone in a system of their own, with the entities and
+/// parameters they refer to ([`System::part`]).
+pub(crate) fn kept_alone(sys: &System, set: impl Iterator<Item = Member>) -> Option<System> {
     let mut constraints = Vec::new();
     let mut entities = Vec::new();
     for m in set {
-        match *m {
+        match m {
             Member::Constraint(c) => constraints.push(c),
             Member::Entity(e) => entities.push(e),
         }
     }
     sys.part(&constraints, &entities)
-        .is_some_and(|part| crate::solve::builds_alone(&part, group, cfg))
 }
 
 /// Dependent rows from which [`name_conflicts`] first names conflicts from the most
