@@ -45,8 +45,7 @@ impl EnvelopeLdlt {
     }
 
     /// The number of entries in the envelope (its size).
-    #[cfg(test)]
-    pub fn values_len(&self) -> usize {
+    pub fn len(&self) -> usize {
         self.l.len()
     }
 
@@ -183,7 +182,7 @@ mod tests {
             .collect();
         let mut e = EnvelopeLdlt::new(first.clone());
         let mut d = DenseLdlt::new(m);
-        let mut a = vec![0.0; e.values_len()];
+        let mut a = vec![0.0; e.len()];
         for i in 0..m {
             for k in first[i] as usize..=i {
                 let (ie, id) = (e.index(i, k), d.index(i, k));
@@ -222,7 +221,7 @@ mod tests {
         }
         assert_eq!(ye[4], 0.0);
         // Each row from its first nonzero to the diagonal: 1 + 2 + 2 + 2 + 4 + 3 entries.
-        assert_eq!(e.values_len(), 14);
+        assert_eq!(e.len(), 14);
         assert!(!e.factor(&[f64::NAN; 14], 0.0, 1e-10));
     }
 

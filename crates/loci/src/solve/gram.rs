@@ -229,6 +229,8 @@ impl Gram {
             Gram::Banded(b) => {
                 b.jv.clear();
                 b.jv.extend_from_slice(jv);
+                b.kept_g.clear();
+                b.formed = false;
             }
             Gram::Sparse(s) => s.assemble(jv),
         }
@@ -394,7 +396,20 @@ pub(crate) struct Banded {
     order: Option<(Vec<u32>, Vec<u32>)>,
     /// A right-hand side in position order.
     tmp: Vec<f64>,
+    /// Whether `G` was formed for the Jacobian of the last [`Gram::assemble`].
+    formed: bool,
+    /// `G` within the envelope, row after row, as the second factorisation since the last
+    /// [`Gram::assemble`] formed it (empty before, and always for an envelope of more than
+    /// [`KEEP_G`] entries). Damped steps factorise `G + lambda I` for one `G` and several
+    /// `lambda`, and a truncated step `G` at several thresholds: a fifth of the time of
+    /// diagnosing a small sketch went into forming `G` again for them. Not at the first: most
+    /// Jacobians are factorised once.
+    kept_g: Vec<f64>,
 }
+
+/// The largest envelope whose `G` a [`Banded`] keeps between factorisations (2 MB): a long
+/// chain's holds millions of entries, as many fresh pages to keep them.
+const KEEP_G: usize = 1 << 18;
 
 impl Banded {
     fn new(first: Vec<u32>, columns: &Columns, order: Option<(Vec<u32>, Vec<u32>)>) -> Self {
@@ -414,6 +429,8 @@ impl Banded {
             columns: by_position(columns, order.as_ref().map(|o| &o.1[..])),
             order,
             tmp,
+            formed: false,
+            kept_g: Vec::new(),
         }
     }
 
@@ -426,11 +443,35 @@ impl Banded {
             row_entries,
             columns,
             order,
+            formed,
+            kept_g,
             ..
         } = self;
-        g.factor_rows(lambda, eps, |p, f, out| {
-            row_of_g(p, f, out, jv, row_ptr, row_entries, columns, order.as_ref())
-        })
+        let len = g.len();
+        if kept_g.len() == len && len > 0 {
+            let mut at = 0;
+            return g.factor_rows(lambda, eps, |_, _, out| {
+                out.copy_from_slice(&kept_g[at..at + out.len()]);
+                at += out.len();
+            });
+        }
+        let keep = *formed && len <= KEEP_G;
+        *formed = true;
+        kept_g.clear();
+        if keep {
+            kept_g.reserve_exact(len);
+        }
+        let done = g.factor_rows(lambda, eps, |p, f, out| {
+            row_of_g(p, f, out, jv, row_ptr, row_entries, columns, order.as_ref());
+            if keep {
+                kept_g.extend_from_slice(out);
+            }
+        });
+        // A factorisation that stopped at a pivot that is not finite formed only part of `G`.
+        if !done {
+            kept_g.clear();
+        }
+        done
     }
 
     fn dropped(&self) -> Vec<usize> {
@@ -632,6 +673,77 @@ mod tests {
         let scale = dx1.iter().fold(1.0f64, |a, x| a.max(x.abs()));
         for (a, b) in dx1.iter().zip(&dx2) {
             assert!((a - b).abs() <= 1e-9 * scale, "{a} vs {b}");
+        }
+    }
+
+    /// The pivots, dropped rows and solution of `g`'s last factorisation, bit for bit.
+    fn outcome(g: &mut Gram, rhs: &[f64]) -> (Vec<usize>, u64, Vec<u64>) {
+        let mut y = rhs.to_vec();
+        g.solve(&mut y);
+        (
+            g.dropped(),
+            g.smallest_kept_pivot().to_bits(),
+            y.iter().map(|v| v.to_bits()).collect(),
+        )
+    }
+
+    #[test]
+    fn a_banded_g_kept_between_factorisations_factorises_as_a_fresh_one() {
+        // Damped steps factorise one `G` for several `lambda`: from the second on, from the
+        // `G` the envelope keeps. Each must be the factorisation a fresh `Gram` makes.
+        let (m, columns, rows) = truss(6, true);
+        let jv = values(&rows);
+        let rhs: Vec<f64> = (0..m).map(|r| ((r * 5) % 9) as f64 - 4.0).collect();
+        let mut kept = Gram::new(m, &columns).unwrap();
+        assert!(matches!(kept, Gram::Banded(_)));
+        kept.assemble(&jv);
+        for (lambda, eps) in [(0.0, 1e-10), (1e-3, 1e-10), (0.0, 1e-4), (1e2, 1e-10)] {
+            assert!(kept.factor(lambda, eps));
+            let mut fresh = Gram::new(m, &columns).unwrap();
+            fresh.assemble(&jv);
+            assert!(fresh.factor(lambda, eps));
+            assert_eq!(outcome(&mut kept, &rhs), outcome(&mut fresh, &rhs));
+        }
+        // A new Jacobian is formed anew, not read from the `G` kept for the last one.
+        let jv2: Vec<f64> = jv.iter().map(|v| 1.5 * v).collect();
+        kept.assemble(&jv2);
+        assert!(kept.factor(1e-3, 1e-10));
+        let mut fresh = Gram::new(m, &columns).unwrap();
+        fresh.assemble(&jv2);
+        assert!(fresh.factor(1e-3, 1e-10));
+        assert_eq!(outcome(&mut kept, &rhs), outcome(&mut fresh, &rhs));
+    }
+
+    #[test]
+    fn a_threshold_below_every_kept_pivot_drops_the_same_rows() {
+        // A truncated step is not tried again at a threshold under which the factorisation
+        // it was tried with keeps no pivot: every pivot is kept or dropped as before, so the
+        // factorisation is the same. Envelope and sparse alike.
+        let (m, columns, rows) = truss(10, true);
+        let jv = values(&rows);
+        let rhs: Vec<f64> = (0..m).map(|r| ((r * 7) % 11) as f64 - 5.0).collect();
+        let sparse = || {
+            Gram::Sparse(Box::new(
+                SparseGram::new(m, Pattern::new(m, &columns), Sparse::Auto).unwrap(),
+            ))
+        };
+        for make in [
+            &(|| Gram::new(m, &columns).unwrap()) as &dyn Fn() -> Gram,
+            &sparse,
+        ] {
+            let mut g = make();
+            g.assemble(&jv);
+            assert!(g.factor(0.0, 1e-10));
+            let least = g.smallest_kept_pivot();
+            assert_eq!(g.dropped().len(), 1);
+            let before = outcome(&mut g, &rhs);
+            let raised = 0.5 * least;
+            assert!(raised > 1e-10);
+            assert!(g.factor(0.0, raised));
+            assert_eq!(outcome(&mut g, &rhs), before);
+            // At the smallest kept pivot itself, that row goes too.
+            assert!(g.factor(0.0, least));
+            assert_eq!(g.dropped().len(), 2);
         }
     }
 
@@ -931,7 +1043,7 @@ mod timing {
                 }
                 let lnnz = match &g {
                     Gram::Sparse(s) => s.l_values.len(),
-                    Gram::Banded(b) => b.g.values_len(),
+                    Gram::Banded(b) => b.g.len(),
                 };
                 eprintln!(
                     "n={n} {kind:?}: build {build:?} assemble {asm:?} factor {fac:?} solve {sol:?} L {lnnz}"

@@ -1242,8 +1242,18 @@ impl Component {
                 // steps drop those rows as dependent, with a threshold raised until a step
                 // lowers the merit: the others converge quadratically, and consistent
                 // redundant rows follow them.
+                //
+                // Whether the step from the factorisation `gram` holds was tried and failed.
+                let mut tried = false;
                 for trunc in TRUNCATIONS {
                     let tol = cfg.rank_tolerance.max(trunc);
+                    // No kept pivot at or below the raised threshold: each pivot would be kept
+                    // or dropped as it was, the factorisation and its step would be the ones
+                    // just tried (three in four of these factorisations, diagnosing a fuzzed
+                    // sketch of 38 constraints).
+                    if tried && gram.smallest_kept_pivot() > tol {
+                        continue;
+                    }
                     // The factorisation at the rank tolerance is the one this iteration began
                     // with: no other has been made since (plain steps are not tried once
                     // damping is in use).
@@ -1252,6 +1262,7 @@ impl Component {
                     } else {
                         gram.factor(0.0, tol)
                     };
+                    tried = ready;
                     if ready && full_step_lowers(gram, y, dx, xt, rt, xs) {
                         accepted = true;
                         alpha = 1.0;
