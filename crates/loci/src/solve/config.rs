@@ -68,11 +68,11 @@ pub struct Config {
     /// differently, that does all of it.
     pub(crate) name_conflicts: bool,
     /// Whether damped steps creeping towards a least-squares point above zero may stop once
-    /// what is left to gain at their rate is small (see `newton::settles_above`). Off for the
+    /// what is left to gain at their rate is small (see `newton::rules::settles_above`). Off for the
     /// second solve of a failure whose stop showed no conflict: the rows of a conflict may
     /// become dependent only at the least-squares point itself.
     pub(crate) settle: bool,
-    /// Whether damped steps that crawl (see `newton::CRAWL`) end the solve even where no rows
+    /// Whether damped steps that crawl (see `newton::rules::CRAWL`) end the solve even where no rows
     /// depend on others yet. A solve whose stopping point the rank test reads goes on
     /// crawling until rows become dependent, so that it can name what cannot hold; a check
     /// of a candidate conflict's part only asks whether its equations hold, and names
