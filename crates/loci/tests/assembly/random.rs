@@ -19,6 +19,7 @@
 //! alone, and must solve once any one of its mates is taken out.
 //!
 //! `LOCI_RANDOM_ASSEMBLIES=N` sets how many cases run (default 150, and the pinned ones),
+//! `LOCI_RANDOM_FIRST_ASSEMBLY=K` starts them at seed `K` (default 0), and
 //! `LOCI_RANDOM_ASSEMBLY=K` runs case `K` alone and prints it.
 
 use loci::assembly::{
@@ -941,11 +942,12 @@ fn run_all() -> Seen {
         assert!(wrong.is_empty(), "{}", wrong.join("\n"));
         return seen;
     }
-    let count: Option<u64> = std::env::var("LOCI_RANDOM_ASSEMBLIES")
-        .ok()
-        .and_then(|v| v.parse().ok());
-    let mut seeds: Vec<u64> = (0..count.unwrap_or(150)).collect();
-    if count.is_none() {
+    let env = |name: &str| -> Option<u64> { std::env::var(name).ok()?.trim().parse().ok() };
+    let count = env("LOCI_RANDOM_ASSEMBLIES");
+    let first = env("LOCI_RANDOM_FIRST_ASSEMBLY");
+    let from = first.unwrap_or(0);
+    let mut seeds: Vec<u64> = (from..from + count.unwrap_or(150)).collect();
+    if count.is_none() && first.is_none() {
         seeds.extend(PINNED);
     }
     let mut wrong = Vec::new();
