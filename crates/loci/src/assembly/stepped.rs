@@ -7,6 +7,7 @@ use super::component::Pose;
 use super::mate::AppliedRotation;
 use super::math::{self, Q4, V3};
 use super::prim::{line_offset, plane_offset, signed_angle, wrap, Body, Prim, World};
+use super::{measure, Assembly, AssemblyError, MateReport, MateStatus, SteppedRun};
 use serde::{Deserialize, Serialize};
 
 /// One iteration of the stepped mode: where every component is after it, and how far each
@@ -203,4 +204,92 @@ fn apply(poses: &mut [Pose], body: Body, q: Q4, names: &[String], out: &mut Vec<
         component: names[i].clone(),
         quaternion: q,
     });
+}
+
+impl Assembly {
+    /// The seed's stepped relaxation: passes over the mates in order, each applying its
+    /// capped, gain-scaled rotations and its translations, until every mate is within
+    /// tolerance or [`super::Options::max_steps`] passes. Each pass is reported with the poses
+    /// and every mate's error; each mate's rotations of the last pass are kept in its
+    /// `persistent.last_applied_rotations`. The components end where the last pass left them.
+    ///
+    /// # Errors
+    /// A malformed assembly.
+    pub fn solve_stepped(&mut self) -> Result<SteppedRun, AssemblyError> {
+        self.check()?;
+        let compiled = self.compile_all();
+        let movable = self.movable();
+        let names: Vec<String> = self.components.iter().map(|c| c.name.clone()).collect();
+        let mut poses = self.poses();
+        let s = StepSettings {
+            rotation_gain: self.options.rotation_gain.clamp(0.0, 1.0),
+            max_rotation: self.options.max_rotation_per_iteration,
+        };
+        let tol = self.options.step_tolerance.max(self.options.tolerance);
+        let atol = self.angle_tol().max(tol);
+        let errors = |poses: &[Pose]| -> (Vec<f64>, bool) {
+            let w = World { poses };
+            let mut all = true;
+            let e = compiled
+                .iter()
+                .map(|c| match c {
+                    Ok(p) => p
+                        .iter()
+                        .map(|x| {
+                            let e = x.error(&w);
+                            let (a, b) = x.bodies();
+                            let can =
+                                a.is_some_and(|i| movable[i]) || b.is_some_and(|i| movable[i]);
+                            if can && e > if x.is_angular() { atol } else { tol } {
+                                all = false;
+                            }
+                            e
+                        })
+                        .fold(0.0, f64::max),
+                    Err(_) => f64::NAN,
+                })
+                .collect();
+            (e, all)
+        };
+        let mut iterations = Vec::new();
+        let (_, mut converged) = errors(&poses);
+        let mut index = 0;
+        while !converged && index < self.options.max_steps {
+            index += 1;
+            for (i, c) in compiled.iter().enumerate() {
+                if let Ok(p) = c {
+                    self.mates[i].persistent.last_applied_rotations =
+                        step_prims(p, &mut poses, &movable, &names, &s);
+                }
+            }
+            let (e, ok) = errors(&poses);
+            converged = ok;
+            iterations.push(Iteration {
+                index,
+                poses: poses.clone(),
+                errors: e,
+            });
+        }
+        for (c, p) in self.components.iter_mut().zip(&poses) {
+            c.pose = *p;
+        }
+        for (i, c) in compiled.iter().enumerate() {
+            if let Ok(p) = c {
+                let mut r = MateReport {
+                    id: String::new(),
+                    kind: String::new(),
+                    status: MateStatus::Unsatisfied,
+                    value: None,
+                    error: 0.0,
+                    message: String::new(),
+                    limit_violated: false,
+                };
+                measure(&mut self.mates[i], p, &poses, &mut r);
+            }
+        }
+        Ok(SteppedRun {
+            iterations,
+            converged,
+        })
+    }
 }

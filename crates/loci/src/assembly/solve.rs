@@ -1,0 +1,423 @@
+//! The simultaneous solve: every mate at once on the core solver, from poses turned towards
+//! the requested branches; the report of each mate's status and each component's motions,
+//! with a named conflict checked by solving its mates alone.
+
+use super::confirm::{self, Checked};
+use super::prim::{Prim, World};
+use super::*;
+use crate::{diagnose, Config, GroupId, Member, Outcome, Solver};
+
+/// The largest error, in model units or radians, at which a mate missing the tolerance after
+/// a solve that converged is taken for the rounding of reading the poses back (see
+/// [`Assembly::solve`]) and solved on to [`POLISH`] times the tolerance.
+const POLISH_UP_TO: f64 = 1e-6;
+
+/// The tolerance, as a fraction of the assembly's, of the solve that goes on from the poses
+/// read back.
+const POLISH: f64 = 1e-3;
+
+impl Assembly {
+    /// Solves every mate at once and moves the free components; grounded ones never move.
+    ///
+    /// Directions more than a quarter turn from what their mates ask are first turned
+    /// towards it with the stepped mode's rotations, so that Newton's least-movement steps
+    /// then reach the requested branch (aligned or opposed, the signed angle), not its
+    /// mirror. Poses are written back only when every mate that can hold does.
+    ///
+    /// # Errors
+    /// A malformed assembly (duplicate names or ids, bad poses or options).
+    pub fn solve(&mut self) -> Result<AssemblyReport, AssemblyError> {
+        self.solve_checked(true)
+    }
+
+    /// [`Assembly::solve`]; a named conflict is checked by solving its mates alone
+    /// ([`confirm`]) when `check`.
+    pub(super) fn solve_checked(&mut self, check: bool) -> Result<AssemblyReport, AssemblyError> {
+        self.check()?;
+        let o = &self.options;
+        if !(o.tolerance > 0.0 && o.tolerance.is_finite()) {
+            return Err(AssemblyError::BadOption {
+                name: "tolerance",
+                value: o.tolerance,
+                expected: "a positive finite number",
+            });
+        }
+        let compiled = self.compile_all();
+        let start = self.poses();
+        let movable = self.movable();
+        let tol = self.options.tolerance;
+        let atol = self.angle_tol();
+        let within = |p: &Prim, e: f64| e <= if p.is_angular() { atol } else { tol };
+        let err_of = |prims: &[Prim], poses: &[Pose]| -> (f64, bool) {
+            let w = World { poses };
+            let mut worst = 0.0f64;
+            let mut ok = true;
+            for p in prims {
+                let e = p.error(&w);
+                worst = worst.max(e);
+                ok &= within(p, e);
+            }
+            (worst, ok)
+        };
+        let holds_before: Vec<bool> = compiled
+            .iter()
+            .map(|c| c.as_ref().is_ok_and(|p| err_of(p, &start).1))
+            .collect();
+        let active = |prims: &[Prim]| {
+            prims.iter().any(|p| {
+                let (a, b) = p.bodies();
+                a.is_some_and(|i| movable[i]) || b.is_some_and(|i| movable[i])
+            })
+        };
+        // The prims to solve, each with its mate.
+        let mut prims: Vec<(usize, Prim)> = Vec::new();
+        for (i, c) in compiled.iter().enumerate() {
+            if let Ok(p) = c {
+                if active(p) {
+                    prims.extend(p.iter().map(|x| (i, *x)));
+                }
+            }
+        }
+        let mut aligned = start.clone();
+        self.prealign(&prims, &mut aligned, &movable);
+        let grounded: Vec<bool> = self.components.iter().map(|c| c.grounded).collect();
+        let group = GroupId(build::FREE);
+        let cfg = Config::default()
+            .with_tolerance(tol)
+            .with_max_iterations(self.options.max_iterations);
+        // Signed angles are first written as one cheap perpendicularity, which also holds at
+        // the angle's mirror about the axis and where B's direction lies along it. The answer
+        // is then measured mate by mate; a solve that fails, or ends where some mate does not
+        // hold, is done again with the angles written exactly, so that only an impossible
+        // request is reported as one and its conflict is named between the mates that fight.
+        let has_angles = prims
+            .iter()
+            .any(|(_, p)| matches!(p, Prim::SignedAngle { .. }));
+        // With the diagnosis to follow, which names the conflicts of a failure again (and
+        // builds the solution up when none is shown), the solve itself does not name them:
+        // a conflict among a dozen mates took seconds to name, twice.
+        let names_later = self.options.diagnose;
+        let attempt = |exact: bool, name: bool| -> Result<_, AssemblyError> {
+            let mut poses = aligned.clone();
+            let built = build::build(&poses, &grounded, &prims, exact)?;
+            let mut sys = built.sys;
+            let has_free = sys.params().iter().any(|p| p.group == group);
+            let mut report = crate::Report::empty();
+            if has_free {
+                // A failure of the quick form is solved again exactly, which names it.
+                let mut cfg = cfg.clone();
+                cfg.name_conflicts = name && (exact || !has_angles);
+                report = Solver::new(group, &[], cfg.clone()).solve(&mut sys)?;
+                if report.outcome.is_ok() {
+                    build::read_poses(&sys, &built.poses, &mut poses);
+                    // Poses are read as unit quaternions, which moves a point by the unit
+                    // length's residual times its distance from the frame's origin, and a
+                    // mate's error is a length where the solve bounds each row: a mate can
+                    // read just over the tolerance at an answer the solve accepted. Newton
+                    // goes on from the unit quaternions, to a tighter tolerance (a step or
+                    // two from so close).
+                    let w = World { poses: &poses };
+                    let just_over = |p: &Prim| {
+                        let e = p.error(&w);
+                        !within(p, e) && e <= POLISH_UP_TO
+                    };
+                    if prims.iter().any(|(_, p)| just_over(p)) {
+                        build::write_poses(&mut sys, &built.poses, &poses);
+                        let tight = cfg.clone().with_tolerance(tol * POLISH);
+                        let again = Solver::new(group, &[], tight).solve(&mut sys)?;
+                        if again.outcome.is_ok() {
+                            build::read_poses(&sys, &built.poses, &mut poses);
+                            report.iterations += again.iterations;
+                            report.residual = again.residual;
+                        } else {
+                            // The first answer stands, for the diagnosis too.
+                            build::write_poses(&mut sys, &built.poses, &poses);
+                        }
+                    }
+                } else {
+                    poses = start.clone();
+                }
+            }
+            Ok((sys, built.poses, built.owner, has_free, report, poses))
+        };
+        let mut solved = attempt(false, !names_later)?;
+        if has_angles {
+            let (_, _, _, _, report, poses) = &solved;
+            let all_hold = report.outcome.is_ok()
+                && prims
+                    .iter()
+                    .all(|(_, p)| within(p, p.error(&World { poses })));
+            if !all_hold {
+                solved = attempt(true, !names_later)?;
+            }
+        }
+        let (sys, _, _, has_free, report, _) = &solved;
+        let diag = if *has_free && self.options.diagnose {
+            Some(diagnose(sys, group, &cfg)?)
+        } else {
+            None
+        };
+        // The diagnosis solved what the solve, not naming conflicts, gave up on (by building
+        // it up one mate at a time): the solve again as it would have run alone, for the poses.
+        if diag.as_ref().is_some_and(|d| d.outcome.is_ok()) && !report.outcome.is_ok() {
+            solved = attempt(true, true)?;
+        }
+        let (sys, built_poses, owner, _, report, poses) = solved;
+        let ids: Vec<String> = self.mates.iter().map(|m| m.id.clone()).collect();
+        let sets = |members: &[Member]| mates_of(&owner, members);
+        let (conflicts, redundant): (Vec<Vec<usize>>, Vec<Vec<usize>>) = match &diag {
+            Some(d) => (
+                d.conflicting
+                    .iter()
+                    .map(|c| conflict_mates(&sys, group, &owner, c, &cfg))
+                    .collect::<Result<_, _>>()?,
+                d.redundant.iter().map(|r| sets(&r.members)).collect(),
+            ),
+            None => {
+                let failed: Vec<Member> = report
+                    .failed
+                    .iter()
+                    .map(|&c| Member::Constraint(c))
+                    .collect();
+                match report.outcome {
+                    Outcome::Inconsistent => (vec![sets(&failed)], Vec::new()),
+                    Outcome::RedundantOkay => (Vec::new(), vec![sets(&failed)]),
+                    _ => (Vec::new(), Vec::new()),
+                }
+            }
+        };
+        // A named set is checked by solving its mates alone, as an assembly of their own.
+        let named = check
+            && diag
+                .as_ref()
+                .is_some_and(|d| d.outcome == Outcome::Inconsistent)
+            && !conflicts.is_empty();
+        let mut disproved = false;
+        let conflicts = if named {
+            let solved: Vec<bool> = compiled
+                .iter()
+                .map(|c| c.as_ref().is_ok_and(|p| active(p)))
+                .collect();
+            match self.check_conflicts(conflicts, &solved) {
+                Checked::Confirmed(sets) => sets,
+                Checked::Disproved => {
+                    disproved = true;
+                    Vec::new()
+                }
+                Checked::Solved(found) => {
+                    let (again, report) = *found;
+                    *self = again;
+                    return Ok(confirm::as_from_start(report, &holds_before));
+                }
+            }
+        } else {
+            conflicts
+        };
+        let in_conflict: Vec<bool> = (0..ids.len())
+            .map(|i| conflicts.iter().any(|s| s.contains(&i)))
+            .collect();
+        let in_redundant: Vec<bool> = (0..ids.len())
+            .map(|i| redundant.iter().any(|s| s.contains(&i)))
+            .collect();
+
+        // Mates, measured where the components end.
+        let mut mates = Vec::new();
+        for (i, c) in compiled.iter().enumerate() {
+            let m = &self.mates[i];
+            let mut r = MateReport {
+                id: m.id.clone(),
+                kind: m.kind.name().into(),
+                status: MateStatus::Unsatisfied,
+                value: None,
+                error: 0.0,
+                message: String::new(),
+                limit_violated: false,
+            };
+            match c {
+                Err(e) => {
+                    r.status = match e {
+                        AssemblyError::Unusable {
+                            needed: "direction",
+                            ..
+                        } if matches!(m.kind, MateKind::Angle { .. }) => MateStatus::NoDirection,
+                        AssemblyError::SameComponent { .. }
+                            if matches!(m.kind, MateKind::Angle { .. }) =>
+                        {
+                            MateStatus::SameComponent
+                        }
+                        AssemblyError::NotAttached { .. }
+                            if matches!(m.kind, MateKind::Angle { .. }) =>
+                        {
+                            MateStatus::NotAttached
+                        }
+                        _ => MateStatus::InvalidSelection,
+                    };
+                    r.error = f64::NAN;
+                    r.message = e.to_string();
+                }
+                Ok(p) => {
+                    let (e, ok) = err_of(p, &poses);
+                    r.error = e;
+                    r.status = if !active(p) {
+                        if ok {
+                            MateStatus::Satisfied
+                        } else {
+                            MateStatus::Blocked
+                        }
+                    } else if in_conflict[i] {
+                        MateStatus::Conflicting
+                    } else if !ok {
+                        MateStatus::Unsatisfied
+                    } else if in_redundant[i] {
+                        MateStatus::Redundant
+                    } else if holds_before[i] {
+                        MateStatus::Satisfied
+                    } else {
+                        MateStatus::Adjusted
+                    };
+                    if r.status == MateStatus::Blocked {
+                        r.message = "both components are grounded; unable to adjust".into();
+                    }
+                }
+            }
+            mates.push(r);
+        }
+        for (i, r) in mates.iter_mut().enumerate() {
+            if let Ok(p) = &compiled[i] {
+                measure(&mut self.mates[i], p, &poses, r);
+            }
+        }
+        // Components.
+        let mut components = Vec::new();
+        for (i, c) in self.components.iter_mut().enumerate() {
+            c.pose = poses[i];
+            let (dof, motions) = match (&diag, built_poses[i]) {
+                (Some(d), Some(pp)) => {
+                    freedom::motions(d, &pp, poses[i].translation, poses[i].rotation)
+                }
+                _ => (0, Vec::new()),
+            };
+            components.push(ComponentReport {
+                name: c.name.clone(),
+                grounded: c.grounded,
+                pose: poses[i],
+                dof,
+                motions,
+            });
+        }
+        let name_sets = |s: Vec<Vec<usize>>| -> Vec<Vec<String>> {
+            s.into_iter()
+                .filter(|v| !v.is_empty())
+                .map(|v| v.into_iter().map(|i| ids[i].clone()).collect())
+                .collect()
+        };
+        Ok(AssemblyReport {
+            outcome: if disproved {
+                Outcome::DidNotConverge
+            } else {
+                diag.as_ref().map_or(report.outcome, |d| d.outcome)
+            },
+            dof: diag.as_ref().map_or(report.dof, |d| d.dof),
+            iterations: report.iterations,
+            residual: report.residual,
+            mates,
+            components,
+            conflicts: name_sets(conflicts),
+            redundant: name_sets(redundant),
+        })
+    }
+
+    /// Turns directions that are more than a quarter turn from what their mates ask
+    /// towards it, with the stepped mode's rotations (at most 200 passes).
+    fn prealign(&self, prims: &[(usize, Prim)], poses: &mut [Pose], movable: &[bool]) {
+        let directional: Vec<Prim> = prims
+            .iter()
+            .map(|p| p.1)
+            .filter(|p| matches!(p, Prim::Parallel(..) | Prim::SignedAngle { .. }))
+            .collect();
+        let far = |poses: &[Pose]| {
+            let w = World { poses };
+            directional
+                .iter()
+                .any(|p| p.error(&w) > std::f64::consts::FRAC_PI_2 * 0.9)
+        };
+        if !far(poses) {
+            return;
+        }
+        let names: Vec<String> = self.components.iter().map(|c| c.name.clone()).collect();
+        let s = stepped::StepSettings {
+            rotation_gain: 1.0,
+            max_rotation: self.options.max_rotation_per_iteration.max(1e-3),
+        };
+        for _ in 0..200 {
+            let w = World { poses };
+            let worst = directional.iter().map(|p| p.error(&w)).fold(0.0, f64::max);
+            if worst < std::f64::consts::FRAC_PI_4 {
+                break;
+            }
+            stepped::step_prims(&directional, poses, movable, &names, &s);
+        }
+    }
+}
+
+/// The mate a member of the core's system was written for, if any (`owner`: by constraint
+/// handle, `usize::MAX` for none).
+fn mate_of(owner: &[usize], m: &Member) -> Option<usize> {
+    match m {
+        Member::Constraint(c) => owner
+            .get(c.0 as usize)
+            .copied()
+            .filter(|&m| m != usize::MAX),
+        Member::Entity(_) => None,
+    }
+}
+
+/// The mates `members` were written for, ascending, each once.
+fn mates_of(owner: &[usize], members: &[Member]) -> Vec<usize> {
+    let mut v: Vec<usize> = members.iter().filter_map(|m| mate_of(owner, m)).collect();
+    v.sort_unstable();
+    v.dedup();
+    v
+}
+
+/// The mates of a conflict the core named among its constraints (`set`), minimal among
+/// mates. A set minimal among constraints can hold a mate in part only, where that mate whole
+/// stands in for others (a fastened joint's coincidence, with a concentric mate and a
+/// distance, where the fastened joint and the distance conflict alone): the mates are then
+/// shrunk whole ([`crate::minimal_groups`]). A set that holds each of its mates whole is
+/// minimal among mates already, if the core verified it minimal among its constraints. One it
+/// did not verify (the solver's own list, given when every set the core shrank was found to
+/// hold alone) is shrunk among mates too: a random assembly's seven mates were named, yet six
+/// of them, a perpendicular mate left out, could not hold either (loci named those six when
+/// they were solved alone).
+fn conflict_mates(
+    sys: &crate::System,
+    group: GroupId,
+    owner: &[usize],
+    set: &crate::ConflictSet,
+    cfg: &Config,
+) -> Result<Vec<usize>, AssemblyError> {
+    let members = &set.members[..];
+    let mates = mates_of(owner, members);
+    if mates.len() <= 1 {
+        return Ok(mates);
+    }
+    let mut of_mate = vec![Vec::new(); mates.len()];
+    for c in sys.constraints().iter().filter(|c| c.group == group) {
+        let member = Member::Constraint(c.h);
+        if let Some(i) = mate_of(owner, &member).and_then(|m| mates.binary_search(&m).ok()) {
+            of_mate[i].push(c.h);
+        }
+    }
+    let whole = of_mate
+        .iter()
+        .flatten()
+        .all(|&c| members.contains(&Member::Constraint(c)));
+    if whole && set.verified {
+        return Ok(mates);
+    }
+    Ok(match crate::minimal_groups(sys, group, &of_mate, cfg)? {
+        Some(kept) => kept.into_iter().map(|i| mates[i]).collect(),
+        None => mates,
+    })
+}
