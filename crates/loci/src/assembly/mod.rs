@@ -276,15 +276,7 @@ impl Assembly {
         let poses = self.poses();
         let i = self.mates.iter().position(|m| m.id == id)?;
         let prims = self.compile_all().swap_remove(i).ok()?;
-        let mut r = MateReport {
-            id: String::new(),
-            kind: String::new(),
-            status: MateStatus::Unsatisfied,
-            value: None,
-            error: 0.0,
-            message: String::new(),
-            limit_violated: false,
-        };
+        let mut r = MateReport::unmeasured(String::new(), String::new());
         measure(&mut self.mates[i], &prims, &poses, &mut r);
         angle_reading(&prims, &poses)
     }

@@ -85,6 +85,22 @@ pub struct MateReport {
     pub limit_violated: bool,
 }
 
+impl MateReport {
+    /// The line of mate `id` of kind `kind` before it is measured and judged: unsatisfied,
+    /// no value, no error, no message.
+    pub(crate) fn unmeasured(id: String, kind: String) -> Self {
+        Self {
+            id,
+            kind,
+            status: MateStatus::Unsatisfied,
+            value: None,
+            error: 0.0,
+            message: String::new(),
+            limit_violated: false,
+        }
+    }
+}
+
 /// One component's line in the report.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ComponentReport {

@@ -224,15 +224,7 @@ impl Assembly {
         let mut mates = Vec::new();
         for (i, c) in compiled.iter().enumerate() {
             let m = &self.mates[i];
-            let mut r = MateReport {
-                id: m.id.clone(),
-                kind: m.kind.name().into(),
-                status: MateStatus::Unsatisfied,
-                value: None,
-                error: 0.0,
-                message: String::new(),
-                limit_violated: false,
-            };
+            let mut r = MateReport::unmeasured(m.id.clone(), m.kind.name().into());
             match c {
                 Err(e) => {
                     r.status = match e {

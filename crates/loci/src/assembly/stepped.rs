@@ -7,7 +7,7 @@ use super::component::Pose;
 use super::mate::AppliedRotation;
 use super::math::{self, Q4, V3};
 use super::prim::{line_offset, plane_offset, signed_angle, wrap, Body, Prim, World};
-use super::{measure, Assembly, AssemblyError, MateReport, MateStatus, SteppedRun};
+use super::{measure, Assembly, AssemblyError, MateReport, SteppedRun};
 use serde::{Deserialize, Serialize};
 
 /// One iteration of the stepped mode: where every component is after it, and how far each
@@ -275,15 +275,7 @@ impl Assembly {
         }
         for (i, c) in compiled.iter().enumerate() {
             if let Ok(p) = c {
-                let mut r = MateReport {
-                    id: String::new(),
-                    kind: String::new(),
-                    status: MateStatus::Unsatisfied,
-                    value: None,
-                    error: 0.0,
-                    message: String::new(),
-                    limit_violated: false,
-                };
+                let mut r = MateReport::unmeasured(String::new(), String::new());
                 measure(&mut self.mates[i], p, &poses, &mut r);
             }
         }
