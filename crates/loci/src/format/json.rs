@@ -8,9 +8,11 @@ use crate::solve::{Config, Outcome, Report};
 use crate::{ConstraintId, EntityId};
 use serde::{Deserialize, Serialize};
 
+mod error;
+mod fields;
 mod read;
 
-pub use read::{locate, JsonError, Position};
+pub use error::{locate, JsonError, Position};
 
 /// A problem file: the model and a solve request.
 #[derive(Clone, Debug, Serialize, Deserialize)]
