@@ -25,6 +25,7 @@
 //! # Ok::<(), loci::sketch::SketchError>(())
 //! ```
 
+mod calls;
 mod constraints;
 mod drag;
 mod error;
@@ -34,8 +35,9 @@ mod shapes;
 mod sides;
 mod soft;
 mod spec;
+mod write;
 
-pub use constraints::Round;
+pub use calls::Round;
 pub use drag::{Drag, DragStep};
 pub use error::SketchError;
 pub use ids::{
