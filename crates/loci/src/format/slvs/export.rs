@@ -25,15 +25,15 @@
 //! turns; and the sign of a `signed` angle: SolveSpace's angle has a size only, and keeps
 //! the turn the lines have in the file (the one a solved signed angle has).
 
-use super::codes::GroupKind;
 use super::records::MAGIC;
-use crate::geom::Quat;
 use crate::model::{
     Constraint, ConstraintKind, Entity, EntityId, EntityKind, GroupId, ParamId, System,
 };
 use std::collections::{BTreeMap, BTreeSet, HashMap};
-use std::fmt::Write;
 use thiserror::Error;
+
+mod geometry;
+mod text;
 
 /// A system the writer cannot express as a `.slvs` file.
 #[derive(Clone, Debug, Error, PartialEq)]
@@ -232,18 +232,18 @@ pub fn export(sys: &System) -> Result<Export, ExportError> {
 }
 
 impl<'a> Writer<'a> {
-    fn group(&self, g: GroupId) -> u32 {
+    pub(super) fn group(&self, g: GroupId) -> u32 {
         self.groups[&g].0
     }
 
-    fn value(&self, p: ParamId) -> f64 {
+    pub(super) fn value(&self, p: ParamId) -> f64 {
         self.sys.value(p).unwrap_or(0.0)
     }
 
     /// Parameters no written entity holds (a copy's translation, say) become the
     /// coordinates of datum points in 3D of their group, three at a time, so every value
     /// has a place in the file.
-    fn loose_params(&mut self) -> Result<(), ExportError> {
+    pub(super) fn loose_params(&mut self) -> Result<(), ExportError> {
         let mut loose: BTreeMap<GroupId, Vec<ParamId>> = BTreeMap::new();
         for p in self.sys.params() {
             if !self.map.contains_key(&p.h) {
@@ -275,7 +275,7 @@ impl<'a> Writer<'a> {
 
     /// SolveSpace's three reference planes in group 1: requests 1..3 with their origin at
     /// zero and normals along z, x and y.
-    fn references(&mut self) {
+    pub(super) fn references(&mut self) {
         let quats = [
             [1.0, 0.0, 0.0, 0.0],
             [0.5, 0.5, 0.5, 0.5],
@@ -302,7 +302,15 @@ impl<'a> Writer<'a> {
         }
     }
 
-    fn push_ent(&mut self, h: u32, kind: u32, wp: u32, points: Vec<u32>, normal: u32, dist: u32) {
+    pub(super) fn push_ent(
+        &mut self,
+        h: u32,
+        kind: u32,
+        wp: u32,
+        points: Vec<u32>,
+        normal: u32,
+        dist: u32,
+    ) {
         self.entities.push(Ent {
             h,
             kind,
@@ -313,7 +321,7 @@ impl<'a> Writer<'a> {
         });
     }
 
-    fn request(
+    pub(super) fn request(
         &mut self,
         kind: u32,
         group: GroupId,
@@ -333,7 +341,7 @@ impl<'a> Writer<'a> {
         Ok(r)
     }
 
-    fn take_request(&mut self) -> Result<u32, ExportError> {
+    pub(super) fn take_request(&mut self) -> Result<u32, ExportError> {
         let r = self.next_request;
         if r > MAX_REQUESTS {
             return Err(ExportError::TooLarge { needed: r as usize });
@@ -343,81 +351,20 @@ impl<'a> Writer<'a> {
     }
 
     /// The file workplane of loci workplane `w`.
-    fn workplane_of(&self, w: EntityId) -> Result<u32, ExportError> {
+    pub(super) fn workplane_of(&self, w: EntityId) -> Result<u32, ExportError> {
         self.owner.get(&w).copied().ok_or(ExportError::Unsupported {
             entity: w,
             why: "its workplane is not written",
         })
     }
 
-    /// The file point `k` of request `r` (entity 0 for a datum point), owning loci point `p`
-    /// when it fits (a point of the request's workplane, or a 3D point for a request in 3D)
-    /// and nothing owns it yet; else a point of its own at `p`'s position, tied to `p`'s
-    /// owner (written later) by a coincident constraint.
-    fn point_at(
-        &mut self,
-        p: EntityId,
-        (r, group): (u32, GroupId),
-        k: u32,
-        wp: Option<EntityId>,
-    ) -> Result<u32, ExportError> {
-        let e = self.entity(p)?;
-        let h = r << 16 | k;
-        let n = k.saturating_sub(1);
-        let base = r << 16 | (16 + 3 * n);
-        let file_wp = match wp {
-            Some(w) => self.workplane_of(w)?,
-            None => 0,
-        };
-        let fits = match (&e.kind, wp) {
-            (EntityKind::PointIn2d { .. }, Some(w)) => e.workplane == Some(w),
-            (EntityKind::PointIn2d { .. }, None) => false,
-            (_, None) => true,
-            (_, Some(_)) => false,
-        };
-        // A request's points are unknowns of its group: it owns only points of that group.
-        let own = fits && e.group == group && !self.owner.contains_key(&p);
-        let values: Vec<f64> = if own {
-            e.kind.params().iter().map(|&q| self.value(q)).collect()
-        } else {
-            let pos = self.position(p)?;
-            match wp {
-                Some(w) => self.project(w, pos)?.to_vec(),
-                None => pos.to_vec(),
-            }
-        };
-        for (i, v) in values.iter().enumerate() {
-            self.params.push((base + i as u32, *v));
-        }
-        if own {
-            for (i, &q) in e.kind.params().iter().enumerate() {
-                self.map.insert(q, ParamId(base + i as u32));
-            }
-            self.owner.insert(p, h);
-        } else {
-            // Tie the copy to the loci point (mapped when constraints are written).
-            let both_in = match (wp, e.workplane, &e.kind) {
-                (Some(w), Some(pw), EntityKind::PointIn2d { .. }) if w == pw => Some(w),
-                _ => None,
-            };
-            // The tie belongs to the later of the two groups, which solves it.
-            let c = Constraint::new(0, e.group.max(group).0, ConstraintKind::PointsCoincident)
-                .in_workplane(both_in.map(|w| w.0))
-                .with_points(h, p.0);
-            self.ties(c);
-        }
-        let kind = if wp.is_some() { E_POINT_2D } else { E_POINT_3D };
-        self.push_ent(h, kind, file_wp, vec![], 0, 0);
-        Ok(h)
-    }
-
     /// A tie the writer adds: `pt_a` / `entity_a` is already a file handle, the other side
     /// a loci handle.
-    fn ties(&mut self, c: Constraint) {
+    pub(super) fn ties(&mut self, c: Constraint) {
         self.constraints.push(Queued::Tie(c));
     }
 
-    fn entity(&self, h: EntityId) -> Result<&'a Entity, ExportError> {
+    pub(super) fn entity(&self, h: EntityId) -> Result<&'a Entity, ExportError> {
         self.sys
             .entity(h)
             .ok_or(ExportError::Model(crate::ModelError::Dangling {
@@ -428,258 +375,8 @@ impl<'a> Writer<'a> {
             }))
     }
 
-    /// Where loci point `p` is in space.
-    fn position(&self, p: EntityId) -> Result<[f64; 3], ExportError> {
-        let e = self.entity(p)?;
-        match &e.kind {
-            EntityKind::PointIn2d { params } => {
-                let w = e.workplane.ok_or(ExportError::Unsupported {
-                    entity: p,
-                    why: "a 2D point without a workplane",
-                })?;
-                let (o, q) = self.frame(w)?;
-                let (u, v) = (self.value(params[0]), self.value(params[1]));
-                let (qu, qv) = (q.u(), q.v());
-                Ok([0, 1, 2].map(|i| o[i] + u * qu.at(i) + v * qv.at(i)))
-            }
-            k => {
-                let ps = k.params();
-                Ok([0, 1, 2].map(|i| ps.get(i).map_or(0.0, |&q| self.value(q))))
-            }
-        }
-    }
-
-    fn quat(&self, n: EntityId) -> Result<Quat<f64>, ExportError> {
-        let e = self.entity(n)?;
-        match &e.kind {
-            EntityKind::NormalIn3d { params } | EntityKind::NormalNRot { params, .. } => {
-                let [w, x, y, z] = params.map(|p| self.value(p));
-                Ok(Quat { w, x, y, z })
-            }
-            EntityKind::NormalIn2d => {
-                let w = e.workplane.ok_or(ExportError::Unsupported {
-                    entity: n,
-                    why: "a 2D normal without a workplane",
-                })?;
-                Ok(self.frame(w)?.1)
-            }
-            _ => Err(ExportError::Unsupported {
-                entity: n,
-                why: "not a normal",
-            }),
-        }
-    }
-
-    fn frame(&self, w: EntityId) -> Result<([f64; 3], Quat<f64>), ExportError> {
-        match self.entity(w)?.kind {
-            EntityKind::Workplane { origin, normal } => {
-                Ok((self.position(origin)?, self.quat(normal)?))
-            }
-            _ => Err(ExportError::Unsupported {
-                entity: w,
-                why: "not a workplane",
-            }),
-        }
-    }
-
-    fn project(&self, w: EntityId, p: [f64; 3]) -> Result<[f64; 2], ExportError> {
-        let (o, q) = self.frame(w)?;
-        let d = crate::geom::Vec3::new(p[0] - o[0], p[1] - o[1], p[2] - o[2]);
-        Ok([d.dot(q.u()), d.dot(q.v())])
-    }
-
-    /// The 3D normal at entity 32 of request `r`, owning loci normal `n` when nothing owns it
-    /// yet, else a copy tied by `same_orientation`.
-    fn normal_3d_at(
-        &mut self,
-        n: EntityId,
-        (r, group): (u32, GroupId),
-        point: u32,
-    ) -> Result<u32, ExportError> {
-        let h = r << 16 | 32;
-        let q = self.quat(n)?;
-        let e = self.entity(n)?;
-        let same_group = e.group == group;
-        let tie_group = e.group.max(group);
-        let own_params: Option<Vec<ParamId>> = match &e.kind {
-            EntityKind::NormalIn3d { params } | EntityKind::NormalNRot { params, .. } => {
-                Some(params.to_vec())
-            }
-            _ => None,
-        };
-        for (i, v) in [q.w, q.x, q.y, q.z].into_iter().enumerate() {
-            self.params.push((r << 16 | (32 + i as u32), v));
-        }
-        match own_params.filter(|_| same_group && !self.owner.contains_key(&n)) {
-            Some(ps) => {
-                for (i, p) in ps.into_iter().enumerate() {
-                    self.map.insert(p, ParamId(r << 16 | (32 + i as u32)));
-                }
-                self.owner.insert(n, h);
-            }
-            None => {
-                let c = Constraint::new(0, tie_group.0, ConstraintKind::SameOrientation)
-                    .with_entities([h, n.0, 0, 0]);
-                self.ties(c);
-            }
-        }
-        self.push_ent(h, E_NORMAL_3D, 0, vec![point], 0, 0);
-        Ok(h)
-    }
-
-    /// A workplane request for loci workplane `e` (or, with no origin, a request that only
-    /// holds the 3D normal `normal`).
-    fn workplane(
-        &mut self,
-        e: &'a Entity,
-        origin: Option<EntityId>,
-        normal: Option<EntityId>,
-    ) -> Result<(), ExportError> {
-        let r = self.request(REQ_WORKPLANE, e.group, None)?;
-        let b = r << 16;
-        let pt = match origin {
-            Some(o) => self.point_at(o, (r, e.group), 1, None)?,
-            None => {
-                let pos = [0.0; 3];
-                for (i, v) in pos.into_iter().enumerate() {
-                    self.params.push((b | (16 + i as u32), v));
-                }
-                self.push_ent(b | 1, E_POINT_3D, 0, vec![], 0, 0);
-                b | 1
-            }
-        };
-        if let Some(n) = normal {
-            self.normal_3d_at(n, (r, e.group), pt)?;
-        }
-        // Only a loci workplane is this file workplane; a normal's carrier is not.
-        if origin.is_some() {
-            self.owner.insert(e.h, b);
-        }
-        self.push_ent(b, E_WORKPLANE, 0, vec![pt], b | 32, 0);
-        Ok(())
-    }
-
-    fn curve(
-        &mut self,
-        e: &Entity,
-        req: u32,
-        kind: u32,
-        points: &[EntityId],
-    ) -> Result<(), ExportError> {
-        let r = self.request(req, e.group, e.workplane)?;
-        let mut hs = Vec::new();
-        for (i, &p) in points.iter().enumerate() {
-            hs.push(self.point_at(p, (r, e.group), i as u32 + 1, e.workplane)?);
-        }
-        let wp = match e.workplane {
-            Some(w) => self.workplane_of(w)?,
-            None => 0,
-        };
-        self.push_ent(r << 16, kind, wp, hs, 0, 0);
-        self.owner.insert(e.h, r << 16);
-        Ok(())
-    }
-
-    /// The normal of a request drawn in workplane `wp`: a 2D normal (SolveSpace's normal in
-    /// 2D copies its workplane's).
-    fn normal_2d_at(&mut self, n: EntityId, r: u32, wp: u32, point: u32) -> u32 {
-        let h = r << 16 | 32;
-        self.owner.entry(n).or_insert(h);
-        self.push_ent(h, E_NORMAL_2D, wp, vec![point], 0, 0);
-        h
-    }
-
-    fn circle(&mut self, e: &Entity) -> Result<(), ExportError> {
-        let EntityKind::Circle {
-            center,
-            normal,
-            radius,
-        } = e.kind
-        else {
-            return Ok(());
-        };
-        // In a workplane when its normal is that workplane's; else free in 3D.
-        let planar = e.workplane.filter(|&w| {
-            self.sys
-                .entity(normal)
-                .is_some_and(|n| n.kind == EntityKind::NormalIn2d && n.workplane == Some(w))
-        });
-        let r = self.request(REQ_CIRCLE, e.group, planar)?;
-        let b = r << 16;
-        let c = self.point_at(center, (r, e.group), 1, planar)?;
-        let n = match planar {
-            Some(w) => {
-                let fw = self.workplane_of(w)?;
-                self.normal_2d_at(normal, r, fw, c)
-            }
-            None => self.normal_3d_at(normal, (r, e.group), c)?,
-        };
-        let d = b | 64;
-        let rp = match self.entity(radius)?.kind {
-            EntityKind::Distance { param } => param,
-            _ => {
-                return Err(ExportError::Unsupported {
-                    entity: radius,
-                    why: "a circle's radius must be a distance",
-                })
-            }
-        };
-        self.params.push((d, self.value(rp)));
-        let fw = match planar {
-            Some(w) => self.workplane_of(w)?,
-            None => 0,
-        };
-        let radius_group = self.entity(radius)?.group;
-        match self.radius_circle.get(&radius) {
-            // A radius of an earlier group is written as a value of the circle's own.
-            None if radius_group != e.group => {}
-            None => {
-                self.map.insert(rp, ParamId(d));
-                self.owner.insert(radius, d);
-                self.radius_circle.insert(radius, b);
-            }
-            Some(&first) => {
-                let c = Constraint::new(0, e.group.0, ConstraintKind::EqualRadius)
-                    .with_entities([b, first, 0, 0]);
-                self.constraints.push(Queued::File(c));
-            }
-        }
-        self.push_ent(d, E_DISTANCE, fw, vec![], 0, 0);
-        self.push_ent(b, E_CIRCLE, fw, vec![c], n, d);
-        self.owner.insert(e.h, b);
-        Ok(())
-    }
-
-    fn arc(&mut self, e: &Entity) -> Result<(), ExportError> {
-        let EntityKind::ArcOfCircle {
-            normal,
-            center,
-            start,
-            end,
-        } = e.kind
-        else {
-            return Ok(());
-        };
-        let Some(w) = e.workplane else {
-            return Err(ExportError::Unsupported {
-                entity: e.h,
-                why: "an arc needs a workplane",
-            });
-        };
-        let r = self.request(REQ_ARC, e.group, Some(w))?;
-        let b = r << 16;
-        let fw = self.workplane_of(w)?;
-        let c = self.point_at(center, (r, e.group), 1, Some(w))?;
-        let s = self.point_at(start, (r, e.group), 2, Some(w))?;
-        let f = self.point_at(end, (r, e.group), 3, Some(w))?;
-        let n = self.normal_2d_at(normal, r, fw, c);
-        self.push_ent(b, E_ARC, fw, vec![c, s, f], n, 0);
-        self.owner.insert(e.h, b);
-        Ok(())
-    }
-
     /// Queues loci constraint `c`, its handles mapped when the text is written.
-    fn constraint(&mut self, c: &Constraint) -> Result<(), ExportError> {
+    pub(super) fn constraint(&mut self, c: &Constraint) -> Result<(), ExportError> {
         for h in c.fields().into_iter().flatten().chain(c.workplane) {
             self.file_entity(h)?;
         }
@@ -688,139 +385,10 @@ impl<'a> Writer<'a> {
     }
 
     /// A loci entity's file handle.
-    fn file_entity(&self, h: EntityId) -> Result<u32, ExportError> {
+    pub(super) fn file_entity(&self, h: EntityId) -> Result<u32, ExportError> {
         self.owner.get(&h).copied().ok_or(ExportError::Unsupported {
             entity: h,
             why: "nothing SolveSpace draws holds it",
         })
-    }
-
-    fn text(&mut self) -> String {
-        let mut s = String::from("\n\n\n");
-        let _ = write!(
-            s,
-            "Group.h.v=00000001\nGroup.type={}\nGroup.order=0\nGroup.name=#references\n\
-             Group.remap={{\n}}\nAddGroup\n\n",
-            GroupKind::Drawing3d.code()
-        );
-        for (i, (loci, g)) in self.groups.iter().enumerate() {
-            let _ = write!(
-                s,
-                "Group.h.v={:08x}\nGroup.type={}\nGroup.order={}\nGroup.name=g{}\n\
-                 Group.activeWorkplane.v=00010000\nGroup.remap={{\n}}\nAddGroup\n\n",
-                g.0,
-                GroupKind::Drawing3d.code(),
-                i + 1,
-                loci.0
-            );
-        }
-        let mut params = std::mem::take(&mut self.params);
-        params.sort_by_key(|p| p.0);
-        for (h, v) in params {
-            let _ = writeln!(s, "Param.h.v.={h:08x}");
-            if v != 0.0 {
-                let _ = writeln!(s, "Param.val={v:.20}");
-            }
-            s.push_str("AddParam\n\n");
-        }
-        for r in &self.requests {
-            let _ = writeln!(s, "Request.h.v={:08x}\nRequest.type={}", r.h, r.kind);
-            if r.workplane != 0 {
-                let _ = writeln!(s, "Request.workplane.v={:08x}", r.workplane);
-            }
-            let _ = write!(
-                s,
-                "Request.group.v={:08x}\nRequest.construction=0\nAddRequest\n\n",
-                r.group
-            );
-        }
-        self.entities.sort_by_key(|e| e.h);
-        for e in &self.entities {
-            let _ = writeln!(
-                s,
-                "Entity.h.v={:08x}\nEntity.type={}\nEntity.construction=0",
-                e.h, e.kind
-            );
-            for (i, p) in e.points.iter().enumerate() {
-                let _ = writeln!(s, "Entity.point[{i}].v={p:08x}");
-            }
-            if e.normal != 0 {
-                let _ = writeln!(s, "Entity.normal.v={:08x}", e.normal);
-            }
-            if e.distance != 0 {
-                let _ = writeln!(s, "Entity.distance.v={:08x}", e.distance);
-            }
-            if e.workplane != 0 {
-                let _ = writeln!(s, "Entity.workplane.v={:08x}", e.workplane);
-            }
-            s.push_str("Entity.actVisible=1\nAddEntity\n\n");
-        }
-        let constraints = std::mem::take(&mut self.constraints);
-        let mut n = 0;
-        for c in &constraints {
-            let Some(text) = self.constraint_text(c) else {
-                continue;
-            };
-            n += 1;
-            let _ = write!(s, "Constraint.h.v={n:08x}\n{text}AddConstraint\n\n");
-        }
-        s
-    }
-
-    /// A constraint's fields, its loci handles mapped to the file's.
-    fn constraint_text(&self, q: &Queued) -> Option<String> {
-        let (c, tie, both_file) = match q {
-            Queued::Loci(c) => (c, false, false),
-            Queued::Tie(c) => (c, true, false),
-            Queued::File(c) => (c, true, true),
-        };
-        let map = |h: Option<EntityId>, file: bool| -> Option<u32> {
-            match h {
-                None => Some(0),
-                Some(h) if file => Some(h.0),
-                Some(h) => self.file_entity(h).ok(),
-            }
-        };
-        let mut s = String::new();
-        let _ = writeln!(
-            s,
-            "Constraint.type={}\nConstraint.group.v={:08x}",
-            constraint_code(written_kind(c.kind)),
-            self.groups.get(&c.group)?.0
-        );
-        let wp = map(c.workplane, false)?;
-        if wp != 0 {
-            let _ = writeln!(s, "Constraint.workplane.v={wp:08x}");
-        }
-        if c.val != 0.0 {
-            let _ = writeln!(s, "Constraint.valA={:.20}", c.val);
-        }
-        let fields = [
-            ("ptA", c.pt_a, tie),
-            ("ptB", c.pt_b, both_file),
-            ("entityA", c.entity_a, tie),
-            ("entityB", c.entity_b, both_file),
-            ("entityC", c.entity_c, false),
-            ("entityD", c.entity_d, false),
-        ];
-        for (name, h, file) in fields {
-            let v = map(h, file)?;
-            if v != 0 {
-                let _ = writeln!(s, "Constraint.{name}.v={v:08x}");
-            }
-        }
-        let (other, other2) = if tie {
-            (false, false)
-        } else {
-            (c.other, c.other2)
-        };
-        let _ = writeln!(
-            s,
-            "Constraint.other={}\nConstraint.other2={}\nConstraint.reference={}",
-            u8::from(other),
-            u8::from(other2),
-            u8::from(c.reference)
-        );
-        Some(s)
     }
 }
