@@ -1,4 +1,5 @@
-//! User constraints: typed calls that write core constraints, and their removal.
+//! User constraints: adding, checking, finding, locking and removing them, with everything
+//! each wrote (the typed calls are in `calls`, the writing of core constraints in `write`).
 
 use super::{PointId, ShapeId, ShapeKind as S, Sketch, SketchConstraintId, SketchError, Spec};
 use crate::model::{ConstraintId, EntityId, ParamId};
