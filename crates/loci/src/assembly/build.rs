@@ -300,6 +300,27 @@ impl Builder<'_> {
                         .with_entities([l.0, 0, 0, 0]),
                 )
             }
+            Prim::Parallel(a, b, flip) if self.exact_angles => {
+                // B's direction along A's (against it with `flip`), as two 2D angles of zero
+                // in workplanes A carries, normal to A's direction and to each other. The
+                // cross product of the quick form also holds with B's direction the other
+                // way; these hold only where B's direction has the sense its mate asks.
+                let want = if flip { math::scale(a.d, -1.0) } else { a.d };
+                let u = math::perpendicular(a.d);
+                let v = math::cross(a.d, u);
+                let nt = self.normal(&D {
+                    body: a.body,
+                    d: want,
+                })?;
+                let nb = self.normal(&b)?;
+                for axis in [u, v] {
+                    let wp = self.plane_of(a.body, axis)?;
+                    let mut angle = new(K::Angle).with_entities([nt.0, nb.0, 0, 0]);
+                    angle.workplane = Some(wp);
+                    self.constraint(mate, angle)?;
+                }
+                Ok(())
+            }
             Prim::Parallel(a, b, _) => {
                 let (a, b) = (self.direction(&a)?, self.direction(&b)?);
                 self.constraint(mate, new(K::Parallel).with_entities([a.0, b.0, 0, 0]))

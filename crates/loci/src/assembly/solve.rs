@@ -97,8 +97,8 @@ impl Assembly {
         // builds the solution up when none is shown), the solve itself does not name them:
         // a conflict among a dozen mates took seconds to name, twice.
         let names_later = self.options.diagnose;
-        let attempt = |exact: bool, name: bool| -> Result<_, AssemblyError> {
-            let mut poses = aligned.clone();
+        let attempt_from = |from: &[Pose], exact: bool, name: bool| -> Result<_, AssemblyError> {
+            let mut poses = from.to_vec();
             let built = build::build(&poses, &grounded, &prims, exact)?;
             let mut sys = built.sys;
             let has_free = sys.params().iter().any(|p| p.group == group);
@@ -140,17 +140,41 @@ impl Assembly {
             }
             Ok((sys, built.poses, built.owner, has_free, report, poses))
         };
-        let mut solved = attempt(false, !names_later)?;
-        if has_angles {
+        let all_hold = |poses: &[Pose]| {
+            prims
+                .iter()
+                .all(|(_, p)| within(p, p.error(&World { poses })))
+        };
+        // The quick form, done again exactly where it failed with signed angles written
+        // cheaply, and wherever it converged with some mate left unsatisfied: a parallel or
+        // concentric mate's cross product, and the cheap signed angle, also hold with a
+        // direction the other way, and Newton can end on that mirror branch (seed 23,796 of
+        // the random assemblies named a false conflict through it: alone, its mates ended
+        // with an edge reversed and read `redundant_okay`).
+        let settle = |name: bool| -> Result<_, AssemblyError> {
+            let mut solved = attempt_from(&aligned, false, name)?;
             let (_, _, _, _, report, poses) = &solved;
-            let all_hold = report.outcome.is_ok()
-                && prims
-                    .iter()
-                    .all(|(_, p)| within(p, p.error(&World { poses })));
-            if !all_hold {
-                solved = attempt(true, !names_later)?;
+            let ok = report.outcome.is_ok();
+            if !(ok && all_hold(poses)) && (ok || has_angles) {
+                let mirror = ok.then(|| poses.clone());
+                let spent = report.iterations;
+                solved = attempt_from(&aligned, true, name)?;
+                solved.4.iterations += spent;
+                // The exact form can fail from the start where the quick one crossed over
+                // on its way: from the mirror branch, the reversed directions turned back
+                // towards their mates, it is solved once more.
+                if let Some(mut turned) = mirror.filter(|_| !solved.4.outcome.is_ok()) {
+                    self.prealign(&prims, &mut turned, &movable);
+                    let mut again = attempt_from(&turned, true, name)?;
+                    again.4.iterations += solved.4.iterations;
+                    if again.4.outcome.is_ok() {
+                        solved = again;
+                    }
+                }
             }
-        }
+            Ok(solved)
+        };
+        let mut solved = settle(!names_later)?;
         let (sys, _, _, has_free, report, _) = &solved;
         let diag = if *has_free && self.options.diagnose {
             Some(diagnose(sys, group, &cfg)?)
@@ -160,7 +184,9 @@ impl Assembly {
         // The diagnosis solved what the solve, not naming conflicts, gave up on (by building
         // it up one mate at a time): the solve again as it would have run alone, for the poses.
         if diag.as_ref().is_some_and(|d| d.outcome.is_ok()) && !report.outcome.is_ok() {
-            solved = attempt(true, true)?;
+            let spent = report.iterations;
+            solved = settle(true)?;
+            solved.4.iterations += spent;
         }
         let (sys, built_poses, owner, _, report, poses) = solved;
         let ids: Vec<String> = self.mates.iter().map(|m| m.id.clone()).collect();
@@ -297,6 +323,7 @@ impl Assembly {
                 motions,
             });
         }
+        let missed = mates.iter().any(|m| m.status == MateStatus::Unsatisfied);
         let name_sets = |s: Vec<Vec<usize>>| -> Vec<Vec<String>> {
             s.into_iter()
                 .filter(|v| !v.is_empty())
@@ -312,6 +339,10 @@ impl Assembly {
                 // by 0.3 and 0.46), and the solve's own verdict, a conflict, is contradicted
                 // by that placement: neither is claimed.
                 o if o.is_ok() && !report.outcome.is_ok() => Outcome::DidNotConverge,
+                // Nor where the solve converged on equations that hold on a mirror branch
+                // (a direction's sense the other way) that no retry turned back: a mate
+                // left unsatisfied is never reported `okay`.
+                o if o.is_ok() && missed => Outcome::DidNotConverge,
                 o => o,
             },
             dof: diag.as_ref().map_or(report.dof, |d| d.dof),
