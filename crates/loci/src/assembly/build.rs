@@ -59,7 +59,9 @@ struct Builder<'a> {
 }
 
 /// Builds the system for `prims` (each with the index of its mate) at `poses`; `grounded`
-/// says which components are constants. With `exact_angles`, signed angles are written so
+/// says which components are constants. Parallel prims whose index `sensed` holds are written
+/// by their sense (see [`Builder::prim`]), the others as a cross product, which also holds
+/// with one direction reversed. With `exact_angles`, signed angles are written so
 /// that they hold at their target only (B's direction seen in the plane normal to the axis), at some cost;
 /// without, as one perpendicularity, which also holds at the target plus 180 degrees and
 /// where B's direction lies along the axis.
@@ -68,6 +70,7 @@ pub(crate) fn build(
     grounded: &[bool],
     prims: &[(usize, Prim)],
     exact_angles: bool,
+    sensed: &[bool],
 ) -> Result<Built, ModelError> {
     let mut b = Builder {
         exact_angles,
@@ -101,8 +104,8 @@ pub(crate) fn build(
             pp.origin = origin;
         }
     }
-    for &(mate, ref prim) in prims {
-        b.prim(mate, prim)?;
+    for (k, &(mate, ref prim)) in prims.iter().enumerate() {
+        b.prim(mate, prim, sensed.get(k).copied().unwrap_or(false))?;
     }
     Ok(Built {
         sys: b.sys,
@@ -275,7 +278,7 @@ impl Builder<'_> {
         Ok(())
     }
 
-    fn prim(&mut self, mate: usize, prim: &Prim) -> Result<(), ModelError> {
+    fn prim(&mut self, mate: usize, prim: &Prim, sensed: bool) -> Result<(), ModelError> {
         let new = |k| Constraint::new(1, FREE, k);
         match *prim {
             Prim::Coincident(a, b) => {
@@ -300,7 +303,7 @@ impl Builder<'_> {
                         .with_entities([l.0, 0, 0, 0]),
                 )
             }
-            Prim::Parallel(a, b, flip) if self.exact_angles => {
+            Prim::Parallel(a, b, flip) if sensed => {
                 // B's direction along A's (against it with `flip`), as two 2D angles of zero
                 // in workplanes A carries, normal to A's direction and to each other. The
                 // cross product of the quick form also holds with B's direction the other

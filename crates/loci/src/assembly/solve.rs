@@ -97,49 +97,50 @@ impl Assembly {
         // builds the solution up when none is shown), the solve itself does not name them:
         // a conflict among a dozen mates took seconds to name, twice.
         let names_later = self.options.diagnose;
-        let attempt_from = |from: &[Pose], exact: bool, name: bool| -> Result<_, AssemblyError> {
-            let mut poses = from.to_vec();
-            let built = build::build(&poses, &grounded, &prims, exact)?;
-            let mut sys = built.sys;
-            let has_free = sys.params().iter().any(|p| p.group == group);
-            let mut report = crate::Report::empty();
-            if has_free {
-                // A failure of the quick form is solved again exactly, which names it.
-                let mut cfg = cfg.clone();
-                cfg.name_conflicts = name && (exact || !has_angles);
-                report = Solver::new(group, &[], cfg.clone()).solve(&mut sys)?;
-                if report.outcome.is_ok() {
-                    build::read_poses(&sys, &built.poses, &mut poses);
-                    // Poses are read as unit quaternions, which moves a point by the unit
-                    // length's residual times its distance from the frame's origin, and a
-                    // mate's error is a length where the solve bounds each row: a mate can
-                    // read just over the tolerance at an answer the solve accepted. Newton
-                    // goes on from the unit quaternions, to a tighter tolerance (a step or
-                    // two from so close).
-                    let w = World { poses: &poses };
-                    let just_over = |p: &Prim| {
-                        let e = p.error(&w);
-                        !within(p, e) && e <= POLISH_UP_TO
-                    };
-                    if prims.iter().any(|(_, p)| just_over(p)) {
-                        build::write_poses(&mut sys, &built.poses, &poses);
-                        let tight = cfg.clone().with_tolerance(tol * POLISH);
-                        let again = Solver::new(group, &[], tight).solve(&mut sys)?;
-                        if again.outcome.is_ok() {
-                            build::read_poses(&sys, &built.poses, &mut poses);
-                            report.iterations += again.iterations;
-                            report.residual = again.residual;
-                        } else {
-                            // The first answer stands, for the diagnosis too.
+        let attempt_from =
+            |from: &[Pose], exact: bool, sensed: &[bool], name: bool| -> Result<_, AssemblyError> {
+                let mut poses = from.to_vec();
+                let built = build::build(&poses, &grounded, &prims, exact, sensed)?;
+                let mut sys = built.sys;
+                let has_free = sys.params().iter().any(|p| p.group == group);
+                let mut report = crate::Report::empty();
+                if has_free {
+                    // A failure of the quick form is solved again exactly, which names it.
+                    let mut cfg = cfg.clone();
+                    cfg.name_conflicts = name && (exact || !has_angles);
+                    report = Solver::new(group, &[], cfg.clone()).solve(&mut sys)?;
+                    if report.outcome.is_ok() {
+                        build::read_poses(&sys, &built.poses, &mut poses);
+                        // Poses are read as unit quaternions, which moves a point by the unit
+                        // length's residual times its distance from the frame's origin, and a
+                        // mate's error is a length where the solve bounds each row: a mate can
+                        // read just over the tolerance at an answer the solve accepted. Newton
+                        // goes on from the unit quaternions, to a tighter tolerance (a step or
+                        // two from so close).
+                        let w = World { poses: &poses };
+                        let just_over = |p: &Prim| {
+                            let e = p.error(&w);
+                            !within(p, e) && e <= POLISH_UP_TO
+                        };
+                        if prims.iter().any(|(_, p)| just_over(p)) {
                             build::write_poses(&mut sys, &built.poses, &poses);
+                            let tight = cfg.clone().with_tolerance(tol * POLISH);
+                            let again = Solver::new(group, &[], tight).solve(&mut sys)?;
+                            if again.outcome.is_ok() {
+                                build::read_poses(&sys, &built.poses, &mut poses);
+                                report.iterations += again.iterations;
+                                report.residual = again.residual;
+                            } else {
+                                // The first answer stands, for the diagnosis too.
+                                build::write_poses(&mut sys, &built.poses, &poses);
+                            }
                         }
+                    } else {
+                        poses = start.clone();
                     }
-                } else {
-                    poses = start.clone();
                 }
-            }
-            Ok((sys, built.poses, built.owner, has_free, report, poses))
-        };
+                Ok((sys, built.poses, built.owner, has_free, report, poses))
+            };
         let all_hold = |poses: &[Pose]| {
             prims
                 .iter()
@@ -152,20 +153,31 @@ impl Assembly {
         // the random assemblies named a false conflict through it: alone, its mates ended
         // with an edge reversed and read `redundant_okay`).
         let settle = |name: bool| -> Result<_, AssemblyError> {
-            let mut solved = attempt_from(&aligned, false, name)?;
+            let mut solved = attempt_from(&aligned, false, &[], name)?;
             let (_, _, _, _, report, poses) = &solved;
             let ok = report.outcome.is_ok();
             if !(ok && all_hold(poses)) && (ok || has_angles) {
                 let mirror = ok.then(|| poses.clone());
+                // The parallel prims that ended reversed are written by their sense (only
+                // those: the sensed form is two angles in planes of their own, which make a
+                // failing assembly's diagnosis slower).
+                let w = World { poses };
+                let sensed: Vec<bool> = prims
+                    .iter()
+                    .map(|(_, p)| {
+                        ok && matches!(p, Prim::Parallel(..))
+                            && p.error(&w) > std::f64::consts::FRAC_PI_2
+                    })
+                    .collect();
                 let spent = report.iterations;
-                solved = attempt_from(&aligned, true, name)?;
+                solved = attempt_from(&aligned, true, &sensed, name)?;
                 solved.4.iterations += spent;
                 // The exact form can fail from the start where the quick one crossed over
                 // on its way: from the mirror branch, the reversed directions turned back
                 // towards their mates, it is solved once more.
                 if let Some(mut turned) = mirror.filter(|_| !solved.4.outcome.is_ok()) {
                     self.prealign(&prims, &mut turned, &movable);
-                    let mut again = attempt_from(&turned, true, name)?;
+                    let mut again = attempt_from(&turned, true, &sensed, name)?;
                     again.4.iterations += solved.4.iterations;
                     if again.4.outcome.is_ok() {
                         solved = again;
