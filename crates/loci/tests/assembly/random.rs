@@ -460,7 +460,7 @@ fn random_mate(
                 Relation::Parallel {
                     da: lda,
                     db: ldb,
-                    sense: sense,
+                    sense,
                 },
                 Relation::OnLine {
                     pa: la,
@@ -530,7 +530,7 @@ fn random_mate(
                 let r = Relation::Parallel {
                     da: lda,
                     db: ldb,
-                    sense: sense,
+                    sense,
                 };
                 (mate_of(K::Parallel).flipped(flip), vec![r])
             } else {
@@ -567,7 +567,7 @@ fn random_mate(
                 Relation::Parallel {
                     da: lda,
                     db: ldb,
-                    sense: sense,
+                    sense,
                 },
             ];
             (mate_of(K::Revolute).flipped(flip), rs)
