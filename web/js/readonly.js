@@ -252,7 +252,7 @@ export class AssemblyView {
   lines() {
     return [
       ...this.report.mates.map((m) => `${m.id} (${m.kind}): ${m.status}${m.value !== undefined ? ` = ${m.value.toFixed(3)}` : ""}`),
-      ...this.report.components.map((c) => `${c.name}: ${c.grounded ? "grounded" : c.dof === 0 ? "fully placed" : `${c.dof} dof; ${c.motions.join("; ")}`}`),
+      ...this.report.components.map((c) => `${c.name}: ${c.grounded ? "grounded" : c.dof === null ? "motions not computed" : c.dof === 0 ? "fully placed" : `${c.dof} dof; ${c.motions.join("; ")}`}`),
     ];
   }
 

@@ -280,8 +280,8 @@ impl AssemblyResult {
     fn mates(&self, py: Python<'_>) -> PyResult<PyObject> {
         ser_to_py(py, &self.r.mates)
     }
-    /// Each component's report as a dict: ``name``, ``grounded``, ``pose``, ``dof``,
-    /// ``motions``.
+    /// Each component's report as a dict: ``name``, ``grounded``, ``pose``, ``dof`` (``None``
+    /// when its motions were not computed: ``"diagnose": False`` in ``options``), ``motions``.
     #[getter]
     fn components(&self, py: Python<'_>) -> PyResult<PyObject> {
         ser_to_py(py, &self.r.components)

@@ -442,7 +442,9 @@ export interface ComponentReport {
   name: string;
   grounded: boolean;
   pose: Pose;
-  dof: number;
+  /** Independent motions left (0: held); `null` when not computed (`diagnose: false`). */
+  dof: number | null;
+  /** Those motions in words; empty when `dof` is `null`. */
   motions: string[];
 }
 

@@ -110,9 +110,12 @@ pub struct ComponentReport {
     pub grounded: bool,
     /// Where it is after the solve.
     pub pose: Pose,
-    /// Its independent motions left (0: held).
-    pub dof: usize,
-    /// Those motions in words, e.g. "rotates about axis (0, 0, 1) through (10, 0, 0)".
+    /// Its independent motions left (0: held), or `None` when they were not computed: the
+    /// motions come from the diagnosis, which `options.diagnose: false` turns off. The
+    /// assembly's own `dof` is counted either way.
+    pub dof: Option<usize>,
+    /// Those motions in words, e.g. "rotates about axis (0, 0, 1) through (10, 0, 0)" (empty
+    /// when `dof` is `None`).
     pub motions: Vec<String>,
 }
 
@@ -180,12 +183,11 @@ impl fmt::Display for AssemblyReport {
         for c in &self.components {
             let t = c.pose.translation.map(round);
             write!(f, "  {} at ({}, {}, {})", c.name, t[0], t[1], t[2])?;
-            if c.grounded {
-                writeln!(f, ": grounded")?;
-            } else if c.dof == 0 {
-                writeln!(f, ": fully placed")?;
-            } else {
-                writeln!(f, ": {} dof; {}", c.dof, c.motions.join("; "))?;
+            match c.dof {
+                _ if c.grounded => writeln!(f, ": grounded")?,
+                None => writeln!(f, ": motions not computed (diagnose is off)")?,
+                Some(0) => writeln!(f, ": fully placed")?,
+                Some(n) => writeln!(f, ": {n} dof; {}", c.motions.join("; "))?,
             }
         }
         for c in &self.conflicts {

@@ -323,9 +323,13 @@ impl Assembly {
             c.pose = poses[i];
             let (dof, motions) = match (&diag, built_poses[i]) {
                 (Some(d), Some(pp)) => {
-                    freedom::motions(d, &pp, poses[i].translation, poses[i].rotation)
+                    let (n, words) =
+                        freedom::motions(d, &pp, poses[i].translation, poses[i].rotation);
+                    (Some(n), words)
                 }
-                _ => (0, Vec::new()),
+                // Grounded: no unknowns of its own, and no motions, diagnosed or not.
+                (_, None) => (Some(0), Vec::new()),
+                (None, Some(_)) => (None, Vec::new()),
             };
             components.push(ComponentReport {
                 name: c.name.clone(),

@@ -51,12 +51,64 @@ fn a_hinge_has_exactly_one_rotation_about_its_axis() {
     assert!(r.all_hold(), "{r}");
     assert_eq!(r.dof, 1);
     let door = r.component("door").unwrap();
-    assert_eq!(door.dof, 1);
+    assert_eq!(door.dof, Some(1));
     assert_eq!(
         door.motions,
         ["rotates about axis (0, 0, 1) through (10, 0, 0)"]
     );
-    assert_eq!(r.component("g").unwrap().dof, 0);
+    assert_eq!(r.component("g").unwrap().dof, Some(0));
+}
+
+#[test]
+fn without_the_diagnosis_no_component_is_said_to_be_placed() {
+    // A hinge leaves the door one rotation. With the diagnosis off its motions are unknown:
+    // the report must not read "fully placed" (dof 0), as it did.
+    let mut asm = Assembly::new();
+    let hinge = loci::assembly::Reference::Axis {
+        point: [10.0, 0.0, 0.0],
+        direction: [0.0, 0.0, 1.0],
+    };
+    asm.add_component(
+        parts("g", Pose::IDENTITY)
+            .grounded()
+            .with("hinge", hinge.clone()),
+    )
+    .unwrap();
+    asm.add_component(
+        parts("door", Pose::new([0.2, -0.1, 0.3], [1.0, 0.0, 0.0, 0.0])).with("hinge", hinge),
+    )
+    .unwrap();
+    asm.add_component(parts(
+        "loose",
+        Pose::new([5.0, 5.0, 5.0], [1.0, 0.0, 0.0, 0.0]),
+    ))
+    .unwrap();
+    asm.add_mate(Mate::new(
+        K::Revolute,
+        Selection::on("g", "hinge"),
+        Selection::on("door", "hinge"),
+    ))
+    .unwrap();
+    asm.options.diagnose = false;
+    let r = asm.solve().unwrap();
+    assert!(r.all_hold(), "{r}");
+    // The assembly's count comes from the solve: the hinge's turn and the loose part's six.
+    assert_eq!(r.dof, 7);
+    for name in ["door", "loose"] {
+        let c = r.component(name).unwrap();
+        assert_eq!(c.dof, None, "{name}: {r}");
+        assert!(c.motions.is_empty());
+    }
+    assert_eq!(r.component("g").unwrap().dof, Some(0));
+    let text = r.to_string();
+    assert!(!text.contains("fully placed"), "{text}");
+    assert_eq!(text.matches(": motions not computed").count(), 2, "{text}");
+
+    // With it, the same assembly's components are described.
+    asm.options.diagnose = true;
+    let r = asm.solve().unwrap();
+    assert_eq!(r.component("door").unwrap().dof, Some(1));
+    assert_eq!(r.component("loose").unwrap().dof, Some(6));
 }
 
 #[test]
@@ -81,7 +133,7 @@ fn motions_read_as_words() {
     mate(&mut asm, K::Planar, "top", "top");
     let r = asm.solve().unwrap();
     let b = r.component("b").unwrap();
-    assert_eq!(b.dof, 3);
+    assert_eq!(b.dof, Some(3));
     assert_eq!(b.motions[0], "slides in the plane normal to (0, 0, 1)");
     assert!(
         b.motions[1].starts_with("rotates about axis (0, 0, 1)"),
