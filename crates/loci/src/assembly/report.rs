@@ -136,7 +136,9 @@ pub struct AssemblyReport {
     pub components: Vec<ComponentReport>,
     /// Minimal sets of mates that cannot all hold, by id.
     pub conflicts: Vec<Vec<String>>,
-    /// Sets of mates of which some are not needed, by id.
+    /// Sets of mates that ask something twice, by id: some of them are not needed (status
+    /// `redundant`), or, where no one of them can go whole, only parts of them (a ball joint
+    /// and collinear edges on one part: seven conditions on six freedoms).
     pub redundant: Vec<Vec<String>>,
 }
 

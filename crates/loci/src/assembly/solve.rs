@@ -203,13 +203,17 @@ impl Assembly {
         let (sys, built_poses, owner, _, report, poses) = solved;
         let ids: Vec<String> = self.mates.iter().map(|m| m.id.clone()).collect();
         let sets = |members: &[Member]| mates_of(&owner, members);
-        let (conflicts, redundant): (Vec<Vec<usize>>, Vec<Vec<usize>>) = match &diag {
+        // Redundant sets, each with whether its mates can go whole (status `redundant`).
+        let (conflicts, redundant): (Vec<Vec<usize>>, Vec<(Vec<usize>, bool)>) = match &diag {
             Some(d) => (
                 d.conflicting
                     .iter()
                     .map(|c| conflict_mates(&sys, group, &owner, c, &cfg))
                     .collect::<Result<_, _>>()?,
-                d.redundant.iter().map(|r| sets(&r.members)).collect(),
+                d.redundant
+                    .iter()
+                    .map(|r| redundant_mates(&owner, r))
+                    .collect(),
             ),
             None => {
                 let failed: Vec<Member> = report
@@ -219,7 +223,7 @@ impl Assembly {
                     .collect();
                 match report.outcome {
                     Outcome::Inconsistent => (vec![sets(&failed)], Vec::new()),
-                    Outcome::RedundantOkay => (Vec::new(), vec![sets(&failed)]),
+                    Outcome::RedundantOkay => (Vec::new(), vec![(sets(&failed), true)]),
                     _ => (Vec::new(), Vec::new()),
                 }
             }
@@ -255,8 +259,9 @@ impl Assembly {
             .map(|i| conflicts.iter().any(|s| s.contains(&i)))
             .collect();
         let in_redundant: Vec<bool> = (0..ids.len())
-            .map(|i| redundant.iter().any(|s| s.contains(&i)))
+            .map(|i| redundant.iter().any(|(s, whole)| *whole && s.contains(&i)))
             .collect();
+        let redundant: Vec<Vec<usize>> = redundant.into_iter().map(|(s, _)| s).collect();
 
         // Mates, measured where the components end.
         let mut mates = Vec::new();
@@ -417,6 +422,22 @@ fn mate_of(owner: &[usize], m: &Member) -> Option<usize> {
 }
 
 /// The mates `members` were written for, ascending, each once.
+/// The mates of a redundancy the core named among its constraints, and whether they can go
+/// whole. The core names what can be removed; when that is only a pose's own condition (the
+/// unit length of a component's rotation, which points held in place by mates imply), the
+/// mates that ask something twice are those it involves: a ball joint and a collinear pair of
+/// edges on one part fix seven conditions of its six freedoms, and neither mate can go. The
+/// report then named no mate for a `redundant_okay` outcome; it now names them, each keeping
+/// its own status.
+fn redundant_mates(owner: &[usize], set: &crate::RedundantSet) -> (Vec<usize>, bool) {
+    let whole = mates_of(owner, &set.members);
+    if whole.is_empty() {
+        (mates_of(owner, &set.involved), false)
+    } else {
+        (whole, true)
+    }
+}
+
 fn mates_of(owner: &[usize], members: &[Member]) -> Vec<usize> {
     let mut v: Vec<usize> = members.iter().filter_map(|m| mate_of(owner, m)).collect();
     v.sort_unstable();

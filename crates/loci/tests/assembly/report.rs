@@ -196,6 +196,33 @@ fn a_repeated_mate_is_redundant() {
 }
 
 #[test]
+fn mates_that_ask_one_condition_twice_are_named_though_neither_can_go() {
+    // A ball joint at a vertex off the edge, and the edge collinear with the ground's: seven
+    // conditions on the part's six freedoms (the vertex's distance from the line is asked
+    // twice), and without either mate the part could move. The core finds the dependent
+    // equation in the rotation's unit length, which no mate owns: the report read
+    // `redundant_okay` naming nothing.
+    let mut asm = two(super::nudge(Pose::IDENTITY));
+    let ball = mate(&mut asm, K::Ball, "far", "far");
+    let line = mate(&mut asm, K::Coincident, "edge", "edge");
+    let r = asm.solve().unwrap();
+    assert!(r.all_hold(), "{r}");
+    assert_eq!(r.outcome, loci::Outcome::RedundantOkay, "{r}");
+    assert_eq!(r.redundant, [vec![ball.clone(), line.clone()]], "{r}");
+    // Neither is removable: each keeps the status of a mate the solve made hold.
+    for id in [&ball, &line] {
+        assert_eq!(r.mate(id).unwrap().status, MateStatus::Adjusted, "{r}");
+    }
+    assert_eq!(r.dof, 0);
+    assert_eq!(r.component("b").unwrap().dof, Some(0), "{r}");
+    assert!(
+        r.to_string()
+            .contains(&format!("redundant: {{{ball}, {line}}}")),
+        "{r}"
+    );
+}
+
+#[test]
 fn selections_that_cannot_serve_are_named() {
     let mut asm = two(Pose::IDENTITY);
     let p = mate(&mut asm, K::Parallel, "corner", "axis");
