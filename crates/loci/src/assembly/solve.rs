@@ -204,7 +204,7 @@ impl Assembly {
         let ids: Vec<String> = self.mates.iter().map(|m| m.id.clone()).collect();
         let sets = |members: &[Member]| mates_of(&owner, members);
         // Redundant sets, each with whether its mates can go whole (status `redundant`).
-        let (conflicts, redundant): (Vec<Vec<usize>>, Vec<(Vec<usize>, bool)>) = match &diag {
+        let (conflicts, redundant): (Vec<Vec<usize>>, Vec<MateSet>) = match &diag {
             Some(d) => (
                 d.conflicting
                     .iter()
@@ -422,6 +422,9 @@ fn mate_of(owner: &[usize], m: &Member) -> Option<usize> {
 }
 
 /// The mates `members` were written for, ascending, each once.
+/// Mates (indices) of a named set, and whether each of them can go whole.
+type MateSet = (Vec<usize>, bool);
+
 /// The mates of a redundancy the core named among its constraints, and whether they can go
 /// whole. The core names what can be removed; when that is only a pose's own condition (the
 /// unit length of a component's rotation, which points held in place by mates imply), the
@@ -429,7 +432,7 @@ fn mate_of(owner: &[usize], m: &Member) -> Option<usize> {
 /// edges on one part fix seven conditions of its six freedoms, and neither mate can go. The
 /// report then named no mate for a `redundant_okay` outcome; it now names them, each keeping
 /// its own status.
-fn redundant_mates(owner: &[usize], set: &crate::RedundantSet) -> (Vec<usize>, bool) {
+fn redundant_mates(owner: &[usize], set: &crate::RedundantSet) -> MateSet {
     let whole = mates_of(owner, &set.members);
     if whole.is_empty() {
         (mates_of(owner, &set.involved), false)
