@@ -35,10 +35,13 @@ impl Assembly {
     /// `solved[i]` says whether mate `i` gave the solve equations: a set holding every such
     /// mate is the assembly as solved, whose solve and diagnosis have failed already.
     pub(super) fn check_conflicts(&self, mut sets: Vec<Vec<usize>>, solved: &[bool]) -> Checked {
+        // The whole assembly alone is the solve that failed: it is tried once more from a
+        // start placed one component at a time. Any other set is solved alone from the
+        // present poses.
         let holds = |set: &Vec<usize>| {
             let whole = (0..solved.len()).all(|i| !solved[i] || set.contains(&i));
             if whole {
-                None
+                self.placed_in_turn(set)
             } else {
                 self.holds_alone(set)
             }
@@ -79,13 +82,21 @@ impl Assembly {
     /// without a diagnosis, if there is one. A subset of mates that built and solved as part
     /// of the whole cannot be malformed alone; should its solve still fail with an error, the
     /// set counts as failing, as the core's own check found.
-    fn holds_alone(&self, set: &[usize]) -> Option<Vec<Pose>> {
-        let mut alone = self.clone();
-        alone.mates = set.iter().map(|&i| self.mates[i].clone()).collect();
-        alone.options.diagnose = false;
+    pub(super) fn holds_alone(&self, set: &[usize]) -> Option<Vec<Pose>> {
+        let mut alone = self.alone(set);
         let report = alone.solve_checked(false).ok()?;
         (report.outcome.is_ok() && report.all_hold())
             .then(|| report.components.iter().map(|c| c.pose).collect())
+    }
+}
+
+impl Assembly {
+    /// The mates `set` alone, on the same components from the same poses, not diagnosed.
+    pub(super) fn alone(&self, set: &[usize]) -> Assembly {
+        let mut alone = self.clone();
+        alone.mates = set.iter().map(|&i| self.mates[i].clone()).collect();
+        alone.options.diagnose = false;
+        alone
     }
 }
 

@@ -34,6 +34,7 @@ mod error;
 mod freedom;
 mod mate;
 mod math;
+mod place;
 mod prim;
 mod report;
 mod solve;

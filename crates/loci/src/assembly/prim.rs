@@ -108,6 +108,20 @@ pub(crate) fn wrap(x: f64) -> f64 {
 }
 
 impl Prim {
+    /// How many conditions it sets (each variant's count above).
+    pub fn conditions(&self) -> usize {
+        match self {
+            Prim::Coincident(..) | Prim::SameOrientation(..) => 3,
+            Prim::OnLine(..) | Prim::Parallel(..) => 2,
+            Prim::InPlane(..)
+            | Prim::Perpendicular(..)
+            | Prim::PtPtDistance(..)
+            | Prim::PtPlaneDistance(..)
+            | Prim::PtLineDistance(..)
+            | Prim::SignedAngle { .. } => 1,
+        }
+    }
+
     /// The bodies the relation ties.
     pub fn bodies(&self) -> (Body, Body) {
         match *self {

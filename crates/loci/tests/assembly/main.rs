@@ -3,6 +3,7 @@
 
 mod angle;
 mod examples;
+mod far_starts;
 mod mates;
 mod random;
 mod report;

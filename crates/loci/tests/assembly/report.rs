@@ -498,7 +498,7 @@ fn a_conflict_the_core_did_not_shrink_is_shrunk_among_mates() {
 }
 
 /// `v` turned by the unit quaternion `q` (w, x, y, z).
-fn turn(q: [f64; 4], v: [f64; 3]) -> [f64; 3] {
+pub(super) fn turn(q: [f64; 4], v: [f64; 3]) -> [f64; 3] {
     let [w, x, y, z] = q;
     let u = [x, y, z];
     let cross = |a: [f64; 3], b: [f64; 3]| {

@@ -1,0 +1,142 @@
+//! A start built one component at a time, for a set of mates that failed solved together.
+//!
+//! Newton solves every mate at once, and from a start far from any solution it can stop at a
+//! placement where the residuals are as small as they get nearby but not zero: a local
+//! minimum, not a conflict. Assembly programs place parts in turn instead: the part most held
+//! by parts already placed first, against those alone, then the next. Each of those solves
+//! is small (one part's six freedoms) and its mates meet fixed references, so it reaches a
+//! placement from far more starts; from the placement they build, the whole set is solved
+//! again. A set that holds from there was no conflict.
+
+use super::math;
+use super::prim::Prim;
+use super::{Assembly, Pose, Selection};
+
+/// Newton iterations for one component's placement at most: one that converges takes 5 to 20
+/// from a far start; one that cannot would run to the assembly's limit (100 by default), tried
+/// from four rotations, for each component, twice.
+const PLACING_ITERATIONS: usize = 30;
+
+/// The rotations a component's placement is tried from, after its own: none, then half a
+/// turn about each axis of its frame. Newton on a rotation can stop where the mates' residual
+/// is least nearby, and such a minimum lies about half a turn from the solution.
+const HALF_TURNS: [[f64; 4]; 4] = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0, 0.0],
+    [0.0, 0.0, 1.0, 0.0],
+    [0.0, 0.0, 0.0, 1.0],
+];
+
+impl Assembly {
+    /// Poses where the mates `set` (indices) all hold, found by placing the components they
+    /// join one at a time and then solving the set whole from there, if that finds one.
+    ///
+    /// Grounded components are placed to begin with. Then, while some component is joined by
+    /// a mate of the set to placed components only (or to the world), the one those mates
+    /// hold by the most conditions (the first among equals: a ball joint's three and a pair
+    /// of collinear edges' four place a part before a ball joint and a distance, 3 + 1, leave
+    /// another free to turn) is solved against them, every other component
+    /// held where it is; its pose is kept whether or not those mates all held. A component
+    /// that no mate of the set ties to the placed ones keeps its pose. Then each placed
+    /// component is solved once more in the same order, against all of its mates.
+    pub(super) fn placed_in_turn(&self, set: &[usize]) -> Option<Vec<Pose>> {
+        let index = |s: &Selection| {
+            s.component
+                .as_ref()
+                .and_then(|n| self.components.iter().position(|c| &c.name == n))
+        };
+        let ends: Vec<(usize, Option<usize>, Option<usize>)> = set
+            .iter()
+            .map(|&m| (m, index(&self.mates[m].a), index(&self.mates[m].b)))
+            .collect();
+        let mut placed: Vec<bool> = self.components.iter().map(|c| c.grounded).collect();
+        let mut work = self.clone();
+        // How many conditions each mate sets (at least one: an angle, or one that compiles
+        // to nothing here).
+        let weight: Vec<usize> = work
+            .compile_all()
+            .iter()
+            .map(|c| {
+                c.as_ref()
+                    .map_or(0, |p| p.iter().map(Prim::conditions).sum())
+                    .max(1)
+            })
+            .collect();
+        work.options.diagnose = false;
+        let whole_iterations = work.options.max_iterations;
+        work.options.max_iterations = whole_iterations.min(PLACING_ITERATIONS);
+        // The mates of the set that join component `c` to placed components or the world.
+        let holding = |c: usize, placed: &[bool]| -> Vec<usize> {
+            let fixed = |x: Option<usize>| x.is_none_or(|x| placed[x]);
+            ends.iter()
+                .filter(|&&(_, a, b)| (a == Some(c) && fixed(b)) || (b == Some(c) && fixed(a)))
+                .map(|&(m, _, _)| m)
+                .collect()
+        };
+        // Component `c` solved against `mates` alone, every other held where it is: from where
+        // it is, then turned half a turn about each axis of its frame, until they all hold.
+        // Otherwise it is left where the first solve ended.
+        let place = |work: &mut Assembly, c: usize, mates: &[usize]| {
+            let start = work.components[c].pose;
+            let mut first = None;
+            for turn in HALF_TURNS {
+                let mut step = work.clone();
+                for (i, comp) in step.components.iter_mut().enumerate() {
+                    comp.grounded = i != c;
+                }
+                step.components[c].pose.rotation = math::qmul(start.rotation, turn);
+                step.mates = mates.iter().map(|&m| self.mates[m].clone()).collect();
+                // The solve writes the poses it ends at, solved or not. An error (none is
+                // known: these mates built as part of the set) moves nothing.
+                let Ok(report) = step.solve_quietly() else {
+                    continue;
+                };
+                let pose = step.components[c].pose;
+                if report.outcome.is_ok() && report.all_hold() {
+                    work.components[c].pose = pose;
+                    return;
+                }
+                first.get_or_insert(pose);
+            }
+            if let Some(pose) = first {
+                work.components[c].pose = pose;
+            }
+        };
+        let mut order = Vec::new();
+        loop {
+            let mut best: Option<(usize, Vec<usize>)> = None;
+            let mut most = 0;
+            for c in (0..placed.len()).filter(|&c| !placed[c]) {
+                let mates = holding(c, &placed);
+                let held: usize = mates.iter().map(|&m| weight[m]).sum();
+                if held > most {
+                    most = held;
+                    best = Some((c, mates));
+                }
+            }
+            let Some((c, mates)) = best else {
+                break;
+            };
+            place(&mut work, c, &mates);
+            placed[c] = true;
+            order.push(c);
+        }
+        // A component placed early met only some of its mates, and those left it free to sit
+        // anywhere they allow: once more in the same order, each against all of its mates.
+        for &c in &order {
+            let mates: Vec<usize> = ends
+                .iter()
+                .filter(|&&(_, a, b)| a == Some(c) || b == Some(c))
+                .map(|&(m, _, _)| m)
+                .collect();
+            place(&mut work, c, &mates);
+        }
+        // The set whole from there, quietly: from the user's poses its solve, and the
+        // diagnosis's attempts to build it up, have failed already.
+        work.options.max_iterations = whole_iterations;
+        let mut alone = work.alone(set);
+        let report = alone.solve_quietly().ok()?;
+        (report.outcome.is_ok() && report.all_hold())
+            .then(|| report.components.iter().map(|c| c.pose).collect())
+    }
+}
