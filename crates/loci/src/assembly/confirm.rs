@@ -37,13 +37,13 @@ impl Assembly {
     pub(super) fn check_conflicts(&self, mut sets: Vec<Vec<usize>>, solved: &[bool]) -> Checked {
         // The whole assembly alone is the solve that failed: it is tried once more from a
         // start placed one component at a time. Any other set is solved alone from the
-        // present poses.
+        // present poses, and then from such a start.
         let holds = |set: &Vec<usize>| {
             let whole = (0..solved.len()).all(|i| !solved[i] || set.contains(&i));
             if whole {
                 self.placed_in_turn(set)
             } else {
-                self.holds_alone(set)
+                self.holds_alone(set).or_else(|| self.placed_in_turn(set))
             }
         };
         for round in 0..=MAX_ROUNDS {
