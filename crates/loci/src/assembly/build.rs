@@ -59,9 +59,9 @@ struct Builder<'a> {
 }
 
 /// Builds the system for `prims` (each with the index of its mate) at `poses`; `grounded`
-/// says which components are constants. Parallel prims whose index `sensed` holds are written
-/// by their sense (see [`Builder::prim`]), the others as a cross product, which also holds
-/// with one direction reversed. With `exact_angles`, signed angles are written so
+/// says which components are constants. Parallel and orientation prims whose index `sensed`
+/// holds are written by their sense (see [`Builder::prim`]), the others as a cross product,
+/// which also holds with one direction reversed (an orientation, a quarter or half turn off). With `exact_angles`, signed angles are written so
 /// that they hold at their target only (B's direction seen in the plane normal to the axis), at some cost;
 /// without, as one perpendicularity, which also holds at the target plus 180 degrees and
 /// where B's direction lies along the axis.
@@ -355,6 +355,34 @@ impl Builder<'_> {
                         .with_entities([l.0, 0, 0, 0])
                         .with_val(d),
                 )
+            }
+            Prim::SameOrientation(a, b, rel) if sensed => {
+                // B's frame turned exactly as A's times `rel`: its X axis along that frame's
+                // (two 2D angles of zero in planes A carries, normal to the frame's Z and Y)
+                // and its Y axis along the frame's, seen in the plane normal to its X. The
+                // core's same orientation (N axes parallel either way, U normal to V or U)
+                // also holds a quarter or half turn off, and Newton can end there: a fastened
+                // joint, started far off, ended with its equations at 5e-15 and the part
+                // turned half a turn.
+                let [ex, ey, ez] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+                    .map(|v| math::rotate(rel, v));
+                let ax = self.normal(&D { body: a, d: ex })?;
+                let ay = self.normal(&D { body: a, d: ey })?;
+                let bx = self.normal(&D {
+                    body: b,
+                    d: [1.0, 0.0, 0.0],
+                })?;
+                let by = self.normal(&D {
+                    body: b,
+                    d: [0.0, 1.0, 0.0],
+                })?;
+                for (axis, na, nb) in [(ez, ax, bx), (ey, ax, bx), (ex, ay, by)] {
+                    let wp = self.plane_of(a, axis)?;
+                    let mut angle = new(K::Angle).with_entities([na.0, nb.0, 0, 0]);
+                    angle.workplane = Some(wp);
+                    self.constraint(mate, angle)?;
+                }
+                Ok(())
             }
             Prim::SameOrientation(a, b, rel) => {
                 let na = self.normal_from(a, rel)?;

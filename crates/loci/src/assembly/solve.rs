@@ -107,6 +107,11 @@ impl Assembly {
         let has_angles = prims
             .iter()
             .any(|(_, p)| matches!(p, Prim::SignedAngle { .. }));
+        // Likewise a fastened joint's orientation, written exactly where it failed or ended
+        // a quarter or half turn off.
+        let has_orientations = prims
+            .iter()
+            .any(|(_, p)| matches!(p, Prim::SameOrientation(..)));
         // With the diagnosis to follow, which names the conflicts of a failure again (and
         // builds the solution up when none is shown), the solve itself does not name them:
         // a conflict among a dozen mates took seconds to name, twice.
@@ -170,19 +175,27 @@ impl Assembly {
             let mut solved = attempt_from(&aligned, false, &[], name)?;
             let (_, _, _, _, report, poses) = &solved;
             let ok = report.outcome.is_ok();
-            if !(ok && all_hold(poses)) && (ok || has_angles) {
+            if !(ok && all_hold(poses)) && (ok || has_angles || has_orientations) {
                 let mirror = ok.then(|| poses.clone());
                 // The parallel prims that ended reversed are written by their sense (only
                 // those: the sensed form is two angles in planes of their own, which make a
                 // failing assembly's diagnosis slower).
                 let w = World { poses };
-                let sensed: Vec<bool> = prims
-                    .iter()
-                    .map(|(_, p)| {
-                        ok && matches!(p, Prim::Parallel(..))
-                            && p.error(&w) > std::f64::consts::FRAC_PI_2
-                    })
-                    .collect();
+                // With `every_turn`, every orientation too (see below).
+                let sensed_by = |every_turn: bool| -> Vec<bool> {
+                    prims
+                        .iter()
+                        .map(|(_, p)| match p {
+                            Prim::Parallel(..) => ok && p.error(&w) > std::f64::consts::FRAC_PI_2,
+                            // A quarter or half turn off (see `build`).
+                            Prim::SameOrientation(..) => {
+                                every_turn || (ok && p.error(&w) > std::f64::consts::FRAC_PI_4)
+                            }
+                            _ => false,
+                        })
+                        .collect()
+                };
+                let (sensed, every) = (sensed_by(false), sensed_by(true));
                 let spent = report.iterations;
                 solved = attempt_from(&aligned, true, &sensed, name)?;
                 solved.4.iterations += spent;
@@ -194,6 +207,17 @@ impl Assembly {
                     let mut again = attempt_from(&turned, true, &sensed, name)?;
                     again.4.iterations += solved.4.iterations;
                     if again.4.outcome.is_ok() {
+                        solved = again;
+                    }
+                }
+                // Where the quick form failed outright it may have crossed to an orientation
+                // a turn off on its way: once more with every orientation written exactly,
+                // kept only if it solves (the exact orientation has no naming rescue of its
+                // own to offer: a case that the exact angles' solve built up failed with it).
+                if every != sensed && !(solved.4.outcome.is_ok() && all_hold(&solved.5)) {
+                    let mut again = attempt_from(&aligned, true, &every, name)?;
+                    again.4.iterations += solved.4.iterations;
+                    if again.4.outcome.is_ok() && all_hold(&again.5) {
                         solved = again;
                     }
                 }

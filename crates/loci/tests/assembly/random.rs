@@ -871,7 +871,7 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool) -> Vec<String> {
     // construction, so it never names a conflict, and a solve that succeeds holds every
     // relation. The solved assembly is moved there, as a user drags its parts: what its mates
     // took from the first solve (a fastened joint's relative pose, an angle's axis) stays,
-    // else they would ask for the far start. Not in the default run: 11 of seeds 0-399 still
+    // else they would ask for the far start. Not in the default run: 3 of seeds 0-399 still
     // name a false conflict from there (docs/differential.md).
     if std::env::var_os("LOCI_RANDOM_FAR_STARTS").is_some() {
         far_start_check(&asm, &b, seed, seen, verbose, &mut wrong);
