@@ -710,6 +710,12 @@ const SCATTERED_STARTS: usize = 24;
 /// rotation, up to a unit from its placement.
 fn scattered(b: &Built, seed: u64, i: usize, k: usize) -> Vec<Pose> {
     let mut rng = Rng(seed ^ ((i as u64) << 40) ^ ((k as u64 + 1) << 48) ^ 0x5ca7);
+    spread(b, &mut rng, 1.0)
+}
+
+/// Every free component at a random rotation, up to `r` along each axis from its placement;
+/// the grounded one where it is.
+fn spread(b: &Built, rng: &mut Rng, r: f64) -> Vec<Pose> {
     b.places
         .iter()
         .enumerate()
@@ -717,7 +723,7 @@ fn scattered(b: &Built, seed: u64, i: usize, k: usize) -> Vec<Pose> {
             if c == 0 {
                 Pose::IDENTITY
             } else {
-                Pose::new(add(p.t, rng.point(1.0)), rng.rotation())
+                Pose::new(add(p.t, rng.point(r)), rng.rotation())
             }
         })
         .collect()
@@ -760,18 +766,7 @@ fn far_start_check(
 /// A start far from the placement: every free component within 3 units of where it belongs,
 /// at any rotation.
 fn far_start(b: &Built, seed: u64) -> Vec<Pose> {
-    let mut rng = Rng(seed ^ 0xfa75_7a27);
-    b.places
-        .iter()
-        .enumerate()
-        .map(|(c, p)| {
-            if c == 0 {
-                Pose::IDENTITY
-            } else {
-                Pose::new(add(p.t, rng.point(3.0)), rng.rotation())
-            }
-        })
-        .collect()
+    spread(b, &mut Rng(seed ^ 0xfa75_7a27), 3.0)
 }
 
 /// Whether `cases` solve from `start` with every relation holding.

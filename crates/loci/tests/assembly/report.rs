@@ -20,8 +20,9 @@ fn mate(asm: &mut Assembly, kind: K, ra: &str, rb: &str) -> String {
     .unwrap()
 }
 
-#[test]
-fn a_hinge_has_exactly_one_rotation_about_its_axis() {
+/// Ground `g` and a `door` at `pose`, on a revolute hinge about the axis through (10, 0, 0)
+/// along z.
+fn hinged(pose: Pose) -> Assembly {
     let mut asm = Assembly::new();
     let hinge = loci::assembly::Reference::Axis {
         point: [10.0, 0.0, 0.0],
@@ -33,20 +34,24 @@ fn a_hinge_has_exactly_one_rotation_about_its_axis() {
             .with("hinge", hinge.clone()),
     )
     .unwrap();
-    asm.add_component(
-        parts(
-            "door",
-            Pose::from_axis_angle([0.2, -0.1, 0.3], [0.1, 0.0, 1.0], 12.0),
-        )
-        .with("hinge", hinge),
-    )
-    .unwrap();
+    asm.add_component(parts("door", pose).with("hinge", hinge))
+        .unwrap();
     asm.add_mate(Mate::new(
         K::Revolute,
         Selection::on("g", "hinge"),
         Selection::on("door", "hinge"),
     ))
     .unwrap();
+    asm
+}
+
+#[test]
+fn a_hinge_has_exactly_one_rotation_about_its_axis() {
+    let mut asm = hinged(Pose::from_axis_angle(
+        [0.2, -0.1, 0.3],
+        [0.1, 0.0, 1.0],
+        12.0,
+    ));
     let r = asm.solve().unwrap();
     assert!(r.all_hold(), "{r}");
     assert_eq!(r.dof, 1);
@@ -63,30 +68,10 @@ fn a_hinge_has_exactly_one_rotation_about_its_axis() {
 fn without_the_diagnosis_no_component_is_said_to_be_placed() {
     // A hinge leaves the door one rotation. With the diagnosis off its motions are unknown:
     // the report must not read "fully placed" (dof 0), as it did.
-    let mut asm = Assembly::new();
-    let hinge = loci::assembly::Reference::Axis {
-        point: [10.0, 0.0, 0.0],
-        direction: [0.0, 0.0, 1.0],
-    };
-    asm.add_component(
-        parts("g", Pose::IDENTITY)
-            .grounded()
-            .with("hinge", hinge.clone()),
-    )
-    .unwrap();
-    asm.add_component(
-        parts("door", Pose::new([0.2, -0.1, 0.3], [1.0, 0.0, 0.0, 0.0])).with("hinge", hinge),
-    )
-    .unwrap();
+    let mut asm = hinged(Pose::new([0.2, -0.1, 0.3], [1.0, 0.0, 0.0, 0.0]));
     asm.add_component(parts(
         "loose",
         Pose::new([5.0, 5.0, 5.0], [1.0, 0.0, 0.0, 0.0]),
-    ))
-    .unwrap();
-    asm.add_mate(Mate::new(
-        K::Revolute,
-        Selection::on("g", "hinge"),
-        Selection::on("door", "hinge"),
     ))
     .unwrap();
     asm.options.diagnose = false;
