@@ -61,10 +61,11 @@ struct Builder<'a> {
 /// Builds the system for `prims` (each with the index of its mate) at `poses`; `grounded`
 /// says which components are constants. Parallel and orientation prims whose index `sensed`
 /// holds are written by their sense (see [`Builder::prim`]), the others as a cross product,
-/// which also holds with one direction reversed (an orientation, a quarter or half turn off). With `exact_angles`, signed angles are written so
-/// that they hold at their target only (B's direction seen in the plane normal to the axis), at some cost;
-/// without, as one perpendicularity, which also holds at the target plus 180 degrees and
-/// where B's direction lies along the axis.
+/// which also holds with one direction reversed (an orientation, a quarter or half turn
+/// off). With `exact_angles`, signed angles are written so that they hold at their target
+/// only (B's direction seen in the plane normal to the axis), at some cost; without, as one
+/// perpendicularity, which also holds at the target plus 180 degrees and where B's direction
+/// lies along the axis.
 pub(crate) fn build(
     poses: &[Pose],
     grounded: &[bool],

@@ -43,7 +43,8 @@ impl Assembly {
             if whole {
                 self.placed_in_turn(set)
             } else {
-                self.holds_alone(set).or_else(|| self.placed_in_turn(set))
+                self.holds_alone(set, false)
+                    .or_else(|| self.placed_in_turn(set))
             }
         };
         for round in 0..=MAX_ROUNDS {
@@ -53,10 +54,7 @@ impl Assembly {
             if round == MAX_ROUNDS {
                 break;
             }
-            let mut again = self.clone();
-            for (c, p) in again.components.iter_mut().zip(&placed) {
-                c.pose = *p;
-            }
+            let mut again = self.posed(&placed);
             // The same components and mates as the solve that named the set: an error here
             // (none is known) leaves the set disproved all the same.
             let Ok(report) = again.solve_checked(false) else {
@@ -81,10 +79,16 @@ impl Assembly {
     /// The placement where the mates `set` all hold, solved alone from the present poses
     /// without a diagnosis, if there is one. A subset of mates that built and solved as part
     /// of the whole cannot be malformed alone; should its solve still fail with an error, the
-    /// set counts as failing, as the core's own check found.
-    pub(super) fn holds_alone(&self, set: &[usize]) -> Option<Vec<Pose>> {
+    /// set counts as failing, as the core's own check found. `quietly`: without the core
+    /// naming the conflicts of a failure ([`Assembly::solve_quietly`]).
+    pub(super) fn holds_alone(&self, set: &[usize], quietly: bool) -> Option<Vec<Pose>> {
         let mut alone = self.alone(set);
-        let report = alone.solve_checked(false).ok()?;
+        let report = if quietly {
+            alone.solve_quietly()
+        } else {
+            alone.solve_checked(false)
+        }
+        .ok()?;
         (report.outcome.is_ok() && report.all_hold())
             .then(|| report.components.iter().map(|c| c.pose).collect())
     }
@@ -92,11 +96,20 @@ impl Assembly {
 
 impl Assembly {
     /// The mates `set` alone, on the same components from the same poses, not diagnosed.
-    pub(super) fn alone(&self, set: &[usize]) -> Assembly {
+    fn alone(&self, set: &[usize]) -> Assembly {
         let mut alone = self.clone();
         alone.mates = set.iter().map(|&i| self.mates[i].clone()).collect();
         alone.options.diagnose = false;
         alone
+    }
+
+    /// The same assembly with its components at `poses`.
+    pub(super) fn posed(&self, poses: &[Pose]) -> Assembly {
+        let mut posed = self.clone();
+        for (c, p) in posed.components.iter_mut().zip(poses) {
+            c.pose = *p;
+        }
+        posed
     }
 }
 

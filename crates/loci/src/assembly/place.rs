@@ -32,13 +32,13 @@ impl Assembly {
     /// join one at a time and then solving the set whole from there, if that finds one.
     ///
     /// Grounded components are placed to begin with. Then, while some component is joined by
-    /// a mate of the set to placed components only (or to the world), the one those mates
-    /// hold by the most conditions (the first among equals: a ball joint's three and a pair
-    /// of collinear edges' four place a part before a ball joint and a distance, 3 + 1, leave
-    /// another free to turn) is solved against them, every other component
-    /// held where it is; its pose is kept whether or not those mates all held. A component
-    /// that no mate of the set ties to the placed ones keeps its pose. Then each placed
-    /// component is solved once more in the same order, against all of its mates.
+    /// a mate of the set to placed components (or to the world), the one those mates hold by
+    /// the most conditions is solved against them, every other component held where it is,
+    /// the first among equals: a ball joint's three and a pair of collinear edges' four place
+    /// a part before a ball joint and a distance, 3 + 1, leave another free to turn. Its pose
+    /// is kept whether or not those mates all held. A component that no mate of the set ties
+    /// to the placed ones keeps its pose. Then each placed component is solved once more in
+    /// the same order, against all of its mates.
     pub(super) fn placed_in_turn(&self, set: &[usize]) -> Option<Vec<Pose>> {
         let index = |s: &Selection| {
             s.component
@@ -134,9 +134,6 @@ impl Assembly {
         // The set whole from there, quietly: from the user's poses its solve, and the
         // diagnosis's attempts to build it up, have failed already.
         work.options.max_iterations = whole_iterations;
-        let mut alone = work.alone(set);
-        let report = alone.solve_quietly().ok()?;
-        (report.outcome.is_ok() && report.all_hold())
-            .then(|| report.components.iter().map(|c| c.pose).collect())
+        work.holds_alone(set, true)
     }
 }

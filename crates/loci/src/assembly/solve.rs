@@ -266,6 +266,11 @@ impl Assembly {
                 }
             }
         };
+        // Which mates gave the solve equations.
+        let equations_of: Vec<bool> = compiled
+            .iter()
+            .map(|c| c.as_ref().is_ok_and(|p| active(p)))
+            .collect();
         // A named set is checked by solving its mates alone, as an assembly of their own.
         let named = check
             && diag
@@ -274,11 +279,7 @@ impl Assembly {
             && !conflicts.is_empty();
         let mut disproved = false;
         let conflicts = if named {
-            let solved: Vec<bool> = compiled
-                .iter()
-                .map(|c| c.as_ref().is_ok_and(|p| active(p)))
-                .collect();
-            match self.check_conflicts(conflicts, &solved) {
+            match self.check_conflicts(conflicts, &equations_of) {
                 Checked::Confirmed(sets) => sets,
                 Checked::Disproved => {
                     disproved = true;
@@ -406,17 +407,11 @@ impl Assembly {
         // Found neither a placement nor a conflict: tried once more from a start placed one
         // component at a time, as a conflict of the whole assembly is (`check_conflicts`).
         if check && outcome == Outcome::DidNotConverge {
-            let mut from = self.clone();
-            for (c, p) in from.components.iter_mut().zip(&start) {
-                c.pose = *p;
-            }
-            let set: Vec<usize> = (0..compiled.len())
-                .filter(|&i| compiled[i].as_ref().is_ok_and(|p| active(p)))
+            let set: Vec<usize> = (0..equations_of.len())
+                .filter(|&i| equations_of[i])
                 .collect();
-            if let Some(placed) = from.placed_in_turn(&set) {
-                for (c, p) in from.components.iter_mut().zip(&placed) {
-                    c.pose = *p;
-                }
+            if let Some(placed) = self.posed(&start).placed_in_turn(&set) {
+                let mut from = self.posed(&placed);
                 if let Ok(again) = from.solve_checked(false) {
                     if again.outcome.is_ok() && again.all_hold() {
                         *self = from;
@@ -482,7 +477,6 @@ fn mate_of(owner: &[usize], m: &Member) -> Option<usize> {
     }
 }
 
-/// The mates `members` were written for, ascending, each once.
 /// Mates (indices) of a named set, and whether each of them can go whole.
 type MateSet = (Vec<usize>, bool);
 
@@ -502,6 +496,7 @@ fn redundant_mates(owner: &[usize], set: &crate::RedundantSet) -> MateSet {
     }
 }
 
+/// The mates `members` were written for, ascending, each once.
 fn mates_of(owner: &[usize], members: &[Member]) -> Vec<usize> {
     let mut v: Vec<usize> = members.iter().filter_map(|m| mate_of(owner, m)).collect();
     v.sort_unstable();
