@@ -2,7 +2,7 @@
 //! others: found all at once or one at a time, the same rows.
 
 use super::gram::{Columns, Gram};
-use super::rank::{drop_one_at_a_time, drop_together};
+use super::rank::{drop_hidden, drop_one_at_a_time, drop_together};
 
 /// The rank tolerance.
 const EPS: f64 = 1e-10;
@@ -16,7 +16,12 @@ const EPS: f64 = 1e-10;
 /// largest share in each dependence is 1 (weight 2) and 3 (weight 3). `G` comes factorised
 /// with [`EPS`], every row kept.
 fn nearly_dependent() -> (Gram, Columns, Vec<f64>) {
-    let delta = (3.0 * EPS).sqrt();
+    off_by(1.0, (3.0 * EPS).sqrt(), EPS)
+}
+
+/// The rows of [`nearly_dependent`] with rows 2 and 5 scaled by `s` and off by `delta`, `G`
+/// factorised with the tolerance `eps` (which keeps every row).
+fn off_by(s: f64, delta: f64, eps: f64) -> (Gram, Columns, Vec<f64>) {
     let mut jn = Vec::new();
     let mut lists: Vec<Vec<(u32, u32)>> = vec![Vec::new(); 6];
     let mut put = |row: u32, col: usize, v: f64| {
@@ -28,8 +33,8 @@ fn nearly_dependent() -> (Gram, Columns, Vec<f64>) {
         let (a, b) = if g == 0 { (1.0, 2.0) } else { (3.0, 1.0) };
         put(r, c, 1.0);
         put(r + 1, c + 1, 1.0);
-        put(r + 2, c, a);
-        put(r + 2, c + 1, b);
+        put(r + 2, c, s * a);
+        put(r + 2, c + 1, s * b);
         put(r + 2, c + 2, delta);
     }
     for l in &mut lists {
@@ -38,7 +43,7 @@ fn nearly_dependent() -> (Gram, Columns, Vec<f64>) {
     let columns = Columns::from_lists(&lists);
     let mut gram = Gram::new(6, &columns).expect("a Gram");
     gram.assemble(&jn);
-    assert!(gram.factor(0.0, EPS));
+    assert!(gram.factor(0.0, eps));
     assert!(gram.dropped().is_empty(), "{:?}", gram.dropped());
     (gram, columns, jn)
 }
@@ -74,4 +79,31 @@ fn a_dependence_that_does_not_hold_in_the_jacobian_drops_nothing() {
         drop_one_at_a_time(&mut gram, &columns, &jn, &[], 2, EPS / 10.0),
         None
     );
+}
+
+#[test]
+fn rows_kept_though_the_jacobian_shows_them_dependent_are_dropped() {
+    // Rows 2 and 5 scaled by 1e-4 and off by 1e-10: each group is dependent by far in `J`
+    // (`‖Jᵀ y‖² / ‖y‖²` about 1e-20), but a factorisation at 1e-30 kept their pivots (1e-20),
+    // as rounding keeps the pivot of a dependent row. Both dependences are found, the rows
+    // with the largest shares in them (2 and 5, weight 1 against 1e-4 and 3e-4) dropped, and
+    // `G` left factorised without them at the rank tolerance.
+    let (mut gram, columns, jn) = off_by(1e-4, 1e-10, 1e-30);
+    assert_eq!(
+        drop_hidden(&mut gram, &columns, &jn, Vec::new(), EPS),
+        vec![2, 5]
+    );
+    assert_eq!(gram.dropped(), vec![2, 5]);
+    assert!(gram.smallest_kept_pivot() > 1e-3);
+}
+
+#[test]
+fn rows_that_are_only_nearly_dependent_are_not_hidden_dependences() {
+    // `nearly_dependent`'s groups are within the rank tolerance in `J` (`EPS / 2`, `3 EPS /
+    // 11`) but far from an exact dependence: the pivots stand, nothing is dropped, and the
+    // factorisation is left as it was.
+    let (mut gram, columns, jn) = nearly_dependent();
+    assert!(drop_hidden(&mut gram, &columns, &jn, Vec::new(), EPS).is_empty());
+    assert!(gram.dropped().is_empty());
+    assert!(gram.smallest_kept_pivot() < 1e-9);
 }
