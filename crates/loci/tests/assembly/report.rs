@@ -576,3 +576,32 @@ fn a_dependence_rounding_hides_does_not_take_a_slide_away() {
         );
     }
 }
+
+/// A hinge and a distance from the ground to the hinged part longer than the hinge lets it
+/// reach, beside two mates of a third part (case 28,202 of the random assemblies, its
+/// distance lengthened). The quick form holds with the hinge's axes opposed, where the
+/// distance can be met: alone, the two read `did_not_converge` and named nothing, and in the
+/// whole assembly the core's set, shrunk on that form, kept a third mate the two fail
+/// without.
+#[test]
+fn a_hinge_and_a_distance_it_cannot_reach_are_named_and_nothing_else() {
+    let text = include_str!("../data/assembly/hinge_out_of_reach.json");
+    let mut asm: Assembly = serde_json::from_str(text).unwrap();
+    let r = asm.solve().unwrap();
+    assert_eq!(r.outcome, loci::Outcome::Inconsistent, "{r}");
+    assert_eq!(
+        r.conflicts,
+        vec![vec!["m0".to_string(), "longer".to_string()]],
+        "{r}"
+    );
+    let mut two: Assembly = serde_json::from_str(text).unwrap();
+    two.mates
+        .retain(|m| ["m0", "longer"].contains(&m.id.as_str()));
+    let r = two.solve().unwrap();
+    assert_eq!(r.outcome, loci::Outcome::Inconsistent, "{r}");
+    assert_eq!(
+        r.conflicts,
+        vec![vec!["m0".to_string(), "longer".to_string()]],
+        "{r}"
+    );
+}
