@@ -36,8 +36,10 @@ impl Assembly {
     /// the most conditions is solved against them, every other component held where it is,
     /// the first among equals: a ball joint's three and a pair of collinear edges' four place
     /// a part before a ball joint and a distance, 3 + 1, leave another free to turn. Its pose
-    /// is kept whether or not those mates all held. A component that no mate of the set ties
-    /// to the placed ones keeps its pose. Then each placed component is solved once more in
+    /// is kept whether or not those mates all held. Where no mate of the set ties a component
+    /// left to the placed ones, the one the set's mates hold by the most conditions keeps its
+    /// pose and counts as placed (a group of parts joined only among themselves floats), until
+    /// none is left that a mate of the set joins. Then each placed component is solved once more in
     /// the same order, against all of its mates.
     pub(super) fn placed_in_turn(&self, set: &[usize]) -> Option<Vec<Pose>> {
         let index = |s: &Selection| {
@@ -74,9 +76,9 @@ impl Assembly {
                 .collect()
         };
         // Component `c` solved against `mates` alone, every other held where it is: from where
-        // it is, then turned half a turn about each axis of its frame, until they all hold.
-        // Otherwise it is left where the first solve ended.
-        let place = |work: &mut Assembly, c: usize, mates: &[usize]| {
+        // it is, then turned half a turn about each axis of its frame, until they all hold
+        // (true). Otherwise it is left where the first solve ended.
+        let place = |work: &mut Assembly, c: usize, mates: &[usize]| -> bool {
             let start = work.components[c].pose;
             let mut first = None;
             for turn in HALF_TURNS {
@@ -94,13 +96,14 @@ impl Assembly {
                 let pose = step.components[c].pose;
                 if report.outcome.is_ok() && report.all_hold() {
                     work.components[c].pose = pose;
-                    return;
+                    return true;
                 }
                 first.get_or_insert(pose);
             }
             if let Some(pose) = first {
                 work.components[c].pose = pose;
             }
+            false
         };
         let mut order = Vec::new();
         loop {
@@ -115,7 +118,28 @@ impl Assembly {
                 }
             }
             let Some((c, mates)) = best else {
-                break;
+                // Parts joined only among themselves (none to a placed part or the world) float
+                // as a group, which Newton may meet from anywhere: the one its mates hold by the
+                // most conditions stays where it is, and the rest are placed about it.
+                let mut anchor = None;
+                let mut most = 0;
+                for c in (0..placed.len()).filter(|&c| !placed[c]) {
+                    let held: usize = ends
+                        .iter()
+                        .filter(|&&(_, a, b)| a == Some(c) || b == Some(c))
+                        .map(|&(m, _, _)| weight[m])
+                        .sum();
+                    if held > most {
+                        most = held;
+                        anchor = Some(c);
+                    }
+                }
+                let Some(c) = anchor else {
+                    break;
+                };
+                placed[c] = true;
+                order.push(c);
+                continue;
             };
             place(&mut work, c, &mates);
             placed[c] = true;
@@ -123,17 +147,38 @@ impl Assembly {
         }
         // A component placed early met only some of its mates, and those left it free to sit
         // anywhere they allow: once more in the same order, each against all of its mates.
+        let mut missed = Vec::new();
         for &c in &order {
             let mates: Vec<usize> = ends
                 .iter()
                 .filter(|&&(_, a, b)| a == Some(c) || b == Some(c))
                 .map(|&(m, _, _)| m)
                 .collect();
-            place(&mut work, c, &mates);
+            if !place(&mut work, c, &mates) {
+                missed.push(c);
+            }
         }
         // The set whole from there, quietly: from the user's poses its solve, and the
         // diagnosis's attempts to build it up, have failed already.
         work.options.max_iterations = whole_iterations;
-        work.holds_alone(set, true)
+        if let Some(poses) = work.holds_alone(set, true) {
+            return Some(poses);
+        }
+        // A component that could not be placed against all its mates closes a loop whose
+        // other parts were placed at one of the angles their joints allow, not the one it
+        // needs (seed 393 of the far starts: three parts joined in a ring by a revolute, a
+        // concentric pair and collinear edges). The set whole once more from each half turn
+        // of each such component.
+        for &c in &missed {
+            for turn in &HALF_TURNS[1..] {
+                let mut turned = work.clone();
+                let pose = &mut turned.components[c].pose;
+                pose.rotation = math::qmul(pose.rotation, *turn);
+                if let Some(poses) = turned.holds_alone(set, true) {
+                    return Some(poses);
+                }
+            }
+        }
+        None
     }
 }

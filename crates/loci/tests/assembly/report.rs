@@ -408,25 +408,27 @@ fn two_angles_between_the_same_free_parts_fight_and_nothing_else_does() {
     );
 }
 
-/// Nine mates on three free parts that cannot all hold, though any eight can, where every part the deletion filter
-/// tries that also fails only crawls: damped steps that gain a few parts in ten thousand each,
-/// with no rows dependent yet (case 26 of the random assemblies, its lengthened distance
-/// included). Each such check used to run its full budget of 1,000 iterations: 20 s to name
-/// the set; the checks now stop once the crawl shows (0.6 s).
+/// Nine mates on three free parts (case 26 of the random assemblies as it was drawn, its
+/// lengthened distance included) that were named a conflict, with the diagnosis and without:
+/// every part the deletion filter tried only crawled, and each eight of them held. They all
+/// hold: placed one part at a time, a part that could not be placed against its mates closed
+/// a loop the others had been placed round at the wrong angle, and the set solves whole from
+/// that part turned half a turn. Measured independently from the file's references and the
+/// solved poses, every point lies on its plane or line within 2e-15, the distances and the
+/// angle are met, and the touching faces are opposed.
 #[test]
-fn a_conflict_whose_parts_only_crawl_is_named_whole() {
-    let text = include_str!("../data/assembly/crawling_conflict.json");
-    let all = ["m0", "m1", "m3", "m4", "m5", "m6", "m7", "m8", "longer"];
+fn nine_mates_once_named_a_conflict_all_hold() {
+    let text = include_str!("../data/assembly/false_conflict_of_nine.json");
     for diagnose in [true, false] {
         let mut asm: Assembly = serde_json::from_str(text).unwrap();
-        assert_eq!(asm.mates.len(), all.len());
+        assert_eq!(asm.mates.len(), 9);
         asm.options.diagnose = diagnose;
         let grounded_before = asm.components[0].pose;
         let r = asm.solve().unwrap();
-        assert_eq!(r.outcome, loci::Outcome::Inconsistent, "{r}");
-        assert_eq!(r.conflicts, vec![all.map(String::from).to_vec()], "{r}");
-        for id in all {
-            assert_eq!(r.mate(id).unwrap().status, MateStatus::Conflicting, "{r}");
+        assert!(r.outcome.is_ok() && r.all_hold(), "{r}");
+        assert!(r.conflicts.is_empty(), "{r}");
+        for m in &r.mates {
+            assert!(m.error < 1e-9, "{r}");
         }
         assert_eq!(asm.components[0].pose, grounded_before);
     }
