@@ -20,8 +20,8 @@
 //!
 //! `LOCI_RANDOM_ASSEMBLIES=N` sets how many cases run (default 150, and the pinned ones),
 //! `LOCI_RANDOM_FIRST_ASSEMBLY=K` starts them at seed `K` (default 0),
-//! `LOCI_RANDOM_ASSEMBLY=K` runs case `K` alone and prints it, and `LOCI_RANDOM_FAR_STARTS=1`
-//! solves each case again from far away (see `far_start_check`).
+//! `LOCI_RANDOM_ASSEMBLY=K` runs case `K` alone and prints it. Each case is also solved again
+//! from far away (see `far_start_check`); `LOCI_RANDOM_FAR_STARTS=0` leaves that out.
 
 use loci::assembly::{
     Assembly, AssemblyReport, Component, Mate, MateKind as K, Pose, Reference, Selection,
@@ -861,14 +861,13 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool) -> Vec<String> {
     if r.outcome == Outcome::RedundantOkay {
         seen.redundant += 1;
     }
-    // With `LOCI_RANDOM_FAR_STARTS=1`, from far away too (every free part within 3 units of
-    // its placement, at any rotation): the solve may give up, but the mates hold together by
-    // construction, so it never names a conflict, and a solve that succeeds holds every
-    // relation. The solved assembly is moved there, as a user drags its parts: what its mates
-    // took from the first solve (a fastened joint's relative pose, an angle's axis) stays,
-    // else they would ask for the far start. Not in the default run: 3 of seeds 0-399 still
-    // name a false conflict from there (docs/differential.md).
-    if std::env::var_os("LOCI_RANDOM_FAR_STARTS").is_some() {
+    // From far away too (every free part within 3 units of its placement, at any rotation):
+    // the solve may give up, but the mates hold together by construction, so it never names a
+    // conflict, and a solve that succeeds holds every relation. The solved assembly is moved
+    // there, as a user drags its parts: what its mates took from the first solve (a fastened
+    // joint's relative pose, an angle's axis) stays, else they would ask for the far start.
+    // Seeds 0-999 all solve from there (docs/differential.md).
+    if std::env::var("LOCI_RANDOM_FAR_STARTS").map_or(true, |v| v.trim() != "0") {
         far_start_check(&asm, &b, seed, seen, verbose, &mut wrong);
     }
     // Lengthen one distance between vertices, or add one, and judge whatever comes back.
