@@ -227,22 +227,7 @@ pub(super) fn drop_hidden(
         if !(gram.smallest_kept_pivot() <= NEAR) {
             break;
         }
-        for (i, v) in y.iter_mut().enumerate() {
-            *v = generic(i, round);
-        }
-        let mut finite = true;
-        for _ in 0..INVERSE_STEPS {
-            for &d in &now {
-                y[d] = 0.0;
-            }
-            gram.solve(&mut y);
-            let size = super::newton::largest_abs(&y);
-            if !(size > 0.0 && size.is_finite()) {
-                finite = false;
-                break;
-            }
-            y.iter_mut().for_each(|v| *v /= size);
-        }
+        let finite = inverse_iteration(gram, &mut y, &now, round);
         for &d in &now {
             y[d] = 0.0;
         }
@@ -278,6 +263,29 @@ pub(super) fn drop_hidden(
     now
 }
 
+/// `y` after [`INVERSE_STEPS`] steps of inverse iteration with `gram`'s factors from a generic
+/// start (`attempt` picks which), the rows `dropped` zeroed before each step and each step
+/// scaled to a largest entry of one: the direction of `G`'s least eigenvalue on the kept rows,
+/// their dependence if they have one. False when a step vanished or was not finite (`y` then
+/// as that step left it).
+fn inverse_iteration(gram: &mut Gram, y: &mut [f64], dropped: &[usize], attempt: usize) -> bool {
+    for (i, v) in y.iter_mut().enumerate() {
+        *v = generic(i, attempt);
+    }
+    for _ in 0..INVERSE_STEPS {
+        for &d in dropped {
+            y[d] = 0.0;
+        }
+        gram.solve(y);
+        let size = super::newton::largest_abs(y);
+        if !(size > 0.0 && size.is_finite()) {
+            return false;
+        }
+        y.iter_mut().for_each(|v| *v /= size);
+    }
+    true
+}
+
 /// [`short_of_solution`]'s search for the rows still to drop, one at a time: with `target`
 /// rows dependent where `gram` (factorised without the rows `base`) kept all but `base`, the
 /// dependence among the kept rows is found by inverse iteration with `G`'s factors (its
@@ -298,20 +306,7 @@ pub(super) fn drop_one_at_a_time(
     let mut dropped = base.to_vec();
     let mut y = vec![0.0; m];
     while dropped.len() < target {
-        for (i, v) in y.iter_mut().enumerate() {
-            *v = generic(i, dropped.len());
-        }
-        for _ in 0..INVERSE_STEPS {
-            for &d in &dropped {
-                y[d] = 0.0;
-            }
-            gram.solve(&mut y);
-            let size = super::newton::largest_abs(&y);
-            if !(size > 0.0 && size.is_finite()) {
-                break;
-            }
-            y.iter_mut().for_each(|v| *v /= size);
-        }
+        inverse_iteration(gram, &mut y, &dropped, dropped.len());
         // Jᵀ y, with the rows already dropped left out.
         let gg = jt_norm2(columns, &without, &y);
         let yy: f64 = y.iter().map(|v| v * v).sum();
