@@ -46,8 +46,7 @@ impl Assembly {
             if whole {
                 self.placed_in_turn(set)
             } else {
-                self.holds_alone(set, false)
-                    .or_else(|| self.placed_in_turn(set))
+                self.held_alone(set)
             }
         };
         for round in 0..=MAX_ROUNDS {
@@ -97,13 +96,20 @@ impl Assembly {
         while i < kept.len() && kept.len() > 1 {
             let mut less = kept.clone();
             less.remove(i);
-            if self.holds_alone(&less, false).is_none() && self.placed_in_turn(&less).is_none() {
+            if self.held_alone(&less).is_none() {
                 kept = less;
             } else {
                 i += 1;
             }
         }
         kept
+    }
+
+    /// A placement where the mates `set` hold alone, by the check a named set must fail:
+    /// solved from the present poses, then from a start placed one component at a time.
+    fn held_alone(&self, set: &[usize]) -> Option<Vec<Pose>> {
+        self.holds_alone(set, false)
+            .or_else(|| self.placed_in_turn(set))
     }
 
     /// The placement where the mates `set` all hold, solved alone from the present poses

@@ -39,8 +39,8 @@ impl Assembly {
     /// is kept whether or not those mates all held. Where no mate of the set ties a component
     /// left to the placed ones, the one the set's mates hold by the most conditions keeps its
     /// pose and counts as placed (a group of parts joined only among themselves floats), until
-    /// none is left that a mate of the set joins. Then each placed component is solved once more in
-    /// the same order, against all of its mates.
+    /// none is left that a mate of the set joins. Then each placed component is solved once
+    /// more in the same order, against all of its mates.
     pub(super) fn placed_in_turn(&self, set: &[usize]) -> Option<Vec<Pose>> {
         let index = |s: &Selection| {
             s.component
@@ -72,6 +72,13 @@ impl Assembly {
             let fixed = |x: Option<usize>| x.is_none_or(|x| placed[x]);
             ends.iter()
                 .filter(|&&(_, a, b)| (a == Some(c) && fixed(b)) || (b == Some(c) && fixed(a)))
+                .map(|&(m, _, _)| m)
+                .collect()
+        };
+        // Every mate of the set that joins component `c`.
+        let joining = |c: usize| -> Vec<usize> {
+            ends.iter()
+                .filter(|&&(_, a, b)| a == Some(c) || b == Some(c))
                 .map(|&(m, _, _)| m)
                 .collect()
         };
@@ -124,11 +131,7 @@ impl Assembly {
                 let mut anchor = None;
                 let mut most = 0;
                 for c in (0..placed.len()).filter(|&c| !placed[c]) {
-                    let held: usize = ends
-                        .iter()
-                        .filter(|&&(_, a, b)| a == Some(c) || b == Some(c))
-                        .map(|&(m, _, _)| weight[m])
-                        .sum();
+                    let held: usize = joining(c).iter().map(|&m| weight[m]).sum();
                     if held > most {
                         most = held;
                         anchor = Some(c);
@@ -149,12 +152,7 @@ impl Assembly {
         // anywhere they allow: once more in the same order, each against all of its mates.
         let mut missed = Vec::new();
         for &c in &order {
-            let mates: Vec<usize> = ends
-                .iter()
-                .filter(|&&(_, a, b)| a == Some(c) || b == Some(c))
-                .map(|&(m, _, _)| m)
-                .collect();
-            if !place(&mut work, c, &mates) {
+            if !place(&mut work, c, &joining(c)) {
                 missed.push(c);
             }
         }
