@@ -2,6 +2,7 @@
 //! the stepped mode and the report.
 
 mod angle;
+mod conflicts;
 mod examples;
 mod far_starts;
 mod mates;
