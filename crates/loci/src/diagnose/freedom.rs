@@ -15,6 +15,7 @@ use super::eigen::symmetric_eigen;
 use super::motion::{direction, direction3, Motion};
 use super::report::EntityFreedom;
 use super::unmerged::{Equations, Linear, CONSTANT};
+use crate::geom::SplitMix;
 use crate::model::{EntityId, EntityKind, GroupId, ParamId, System};
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -27,20 +28,6 @@ const OVERSAMPLE: usize = 2;
 /// A motion counts when the entity moves at least this much per unit of motion of the whole
 /// system (the samples are orthonormal); below it, it is rounding.
 const FREE_EPS: f64 = 1e-7;
-
-/// A deterministic generator of samples, so that reports are reproducible.
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn uniform(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    }
-}
 
 /// Orthonormal vectors (over the columns) spanning or sampling the null space of `Jn`.
 pub(crate) fn sketch(

@@ -1,43 +1,21 @@
 //! Conflicts the core's names missed: found mate by mate, and checked from many starts.
 
+use super::random::Rng;
 use loci::assembly::{Assembly, MateStatus};
 use loci::Outcome;
-
-/// A small fixed sequence of unit quaternions and positions (`SplitMix64`).
-struct Starts(u64);
-
-impl Starts {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-    }
-
-    /// `asm` with every free component moved to a random pose within 4 of the origin.
-    fn scatter(&mut self, asm: &Assembly) -> Assembly {
-        let mut moved = asm.clone();
-        for c in moved.components.iter_mut().filter(|c| !c.grounded) {
-            c.pose.translation = [0, 1, 2].map(|_| 4.0 * self.next());
-            let q = [0, 1, 2, 3].map(|_| self.next());
-            let n = q.iter().map(|v| v * v).sum::<f64>().sqrt();
-            c.pose.rotation = q.map(|v| v / n);
-        }
-        moved
-    }
-}
 
 /// Whether `asm` solves, with every mate holding, from `starts` random placements of its
 /// free components (and from its own): the independent check that a set is a conflict.
 pub(super) fn solves_from_somewhere(asm: &Assembly, starts: usize, seed: u64) -> bool {
-    let mut rng = Starts(seed);
+    let mut rng = Rng(seed);
     (0..=starts).any(|k| {
-        let mut a = if k == 0 {
-            asm.clone()
-        } else {
-            rng.scatter(asm)
-        };
+        let mut a = asm.clone();
+        if k > 0 {
+            for c in a.components.iter_mut().filter(|c| !c.grounded) {
+                c.pose.translation = rng.point(4.0);
+                c.pose.rotation = rng.rotation();
+            }
+        }
         a.options.diagnose = false;
         a.solve().is_ok_and(|r| r.outcome.is_ok() && r.all_hold())
     })
