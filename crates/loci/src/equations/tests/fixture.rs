@@ -5,7 +5,7 @@
 use super::super::compile::{compile_group, resolve_constraint};
 use super::super::refs::{Geo, Resolver};
 use super::super::{EqKind, Equation, Owner, Rows};
-use crate::geom::{Quat, Vec3};
+use crate::geom::{Quat, SplitMix, Vec3};
 use crate::model::{
     Constraint, ConstraintKind, Entity, EntityId, EntityKind, GroupId, Param, ParamId, System,
 };
@@ -93,20 +93,16 @@ pub(super) fn arr(v: Vec3<f64>) -> [f64; 3] {
     [v.x, v.y, v.z]
 }
 
-/// A deterministic generator (`SplitMix64`), so every run checks the same points.
-pub(super) struct Rng(u64);
+/// A deterministic generator ([`SplitMix`]), so every run checks the same points.
+pub(super) struct Rng(SplitMix);
 
 impl Rng {
     pub fn new(seed: u64) -> Self {
-        Self(seed)
+        Self(SplitMix(seed))
     }
 
     pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
+        self.0.next_u64()
     }
 
     /// Uniform in `[lo, hi)`.

@@ -19,6 +19,7 @@
 //! only takes bytes.
 
 use super::{solve_all, GroupKind, GroupResult, GroupStatus, SlvsFile};
+use crate::geom::SplitMix;
 use crate::model::{GroupId, ParamId};
 use crate::solve::{Config, Outcome};
 use std::collections::HashMap;
@@ -79,17 +80,13 @@ pub struct GroupCheck {
     pub problem: Option<String>,
 }
 
-/// A small seeded generator (SplitMix64), so runs are repeatable without a dependency.
-struct Rng(u64);
+/// A small seeded generator ([`SplitMix`]), so runs are repeatable without a dependency.
+struct Rng(SplitMix);
 
 impl Rng {
+    /// Uniform in `[0, 1)`.
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
+        (self.0.next_u64() >> 11) as f64 / (1u64 << 53) as f64
     }
 
     /// A perturbation between 1e-3 and 1e-2 in size, either sign.
@@ -154,7 +151,7 @@ pub fn check(bytes: &[u8], seed: u64) -> FixtureCheck {
     let mut agree = file.clone();
     let results = solve_all(&mut agree, &cfg);
     let mut groups = Vec::new();
-    let mut rng = Rng(seed);
+    let mut rng = Rng(SplitMix(seed));
     let mut recover = file.clone();
     for (g, res) in file.groups.iter().zip(&results) {
         let ps = group_params(g.h);
