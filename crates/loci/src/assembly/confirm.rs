@@ -104,8 +104,7 @@ impl Assembly {
     /// on four parts locked by redundant mates, failed from every one of 200 random starts, and
     /// each of the three sets named in turn held alone: it read `did_not_converge`.
     ///
-    /// Only up to [`MAX_FILTER`] mates: each check of a set that fails solves it three ways,
-    /// the last with the core's search for a solution.
+    /// Only up to [`MAX_FILTER`] mates: each check of a set that fails costs several solves.
     fn left_failing(&self, solved: &[bool], named: &[usize]) -> Checked {
         let mut kept: Vec<usize> = (0..solved.len()).filter(|&i| solved[i]).collect();
         if kept.len() < 2 || kept.len() > MAX_FILTER {
@@ -125,10 +124,9 @@ impl Assembly {
             .filter(|i| !named.contains(i))
             .collect();
         order.extend(kept.iter().copied().filter(|i| named.contains(i)));
-        // Each set is checked by the two quick solves of `held_alone`, and only the set left
-        // with the core's search as well: a set that holds is never taken for one that
-        // fails by the quick checks alone, unless no start they try finds its placement, and
-        // the last check catches what is left of that.
+        // Each smaller set is checked by the two quick solves of `held_alone` only; the set
+        // left is also checked with the core's search and from starts drawn at random, so that
+        // a set the quick solves could not place is not named.
         let quick = |set: &[usize]| {
             self.holds_alone(set, true)
                 .or_else(|| self.placed_in_turn(set))
