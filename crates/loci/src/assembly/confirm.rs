@@ -13,7 +13,7 @@
 //! deletion filter over the assembly's mates, [`Assembly::left_failing`]); only where that
 //! finds none either is the outcome `did_not_converge`, not a conflict loci knows to be false.
 
-use super::{Assembly, AssemblyReport, MateStatus, Pose, Selection};
+use super::{Assembly, AssemblyReport, MateStatus, Pose};
 use crate::geom::SplitMix;
 
 /// How many times an assembly is solved again from the placement of a set that held alone.
@@ -199,14 +199,12 @@ impl Assembly {
     /// were named a conflict; they hold from 97 of 100 random starts. Only sets that fail
     /// every other check pay for it.
     fn held_scattered(&self, set: &[usize]) -> Option<Vec<Pose>> {
-        let index = |s: &Selection| {
-            s.component
-                .as_ref()
-                .and_then(|n| self.components.iter().position(|c| &c.name == n))
-        };
         let mut parts: Vec<usize> = set
             .iter()
-            .flat_map(|&m| [index(&self.mates[m].a), index(&self.mates[m].b)])
+            .flat_map(|&m| {
+                let mate = &self.mates[m];
+                [self.component_of(&mate.a), self.component_of(&mate.b)]
+            })
             .flatten()
             .filter(|&c| !self.components[c].grounded)
             .collect();

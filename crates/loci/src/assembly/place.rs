@@ -56,18 +56,23 @@ impl Assembly {
         }
     }
 
+    /// The index of the component a selection is on (`None` for the world).
+    pub(super) fn component_of(&self, s: &Selection) -> Option<usize> {
+        s.component
+            .as_ref()
+            .and_then(|n| self.components.iter().position(|c| &c.name == n))
+    }
+
     /// [`Assembly::placed_in_turn`], one way: `partial` places a component whose mates
     /// cannot all hold against as many of them as do. `Err` says whether some component's
     /// mates could not all hold, so that `partial` would build another placement.
     fn placement(&self, set: &[usize], partial: bool) -> Result<Vec<Pose>, bool> {
-        let index = |s: &Selection| {
-            s.component
-                .as_ref()
-                .and_then(|n| self.components.iter().position(|c| &c.name == n))
-        };
         let ends: Vec<(usize, Option<usize>, Option<usize>)> = set
             .iter()
-            .map(|&m| (m, index(&self.mates[m].a), index(&self.mates[m].b)))
+            .map(|&m| {
+                let mate = &self.mates[m];
+                (m, self.component_of(&mate.a), self.component_of(&mate.b))
+            })
             .collect();
         let mut placed: Vec<bool> = self.components.iter().map(|c| c.grounded).collect();
         let mut work = self.clone();
