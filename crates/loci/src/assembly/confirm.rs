@@ -109,7 +109,7 @@ impl Assembly {
     /// each of the three sets named in turn held alone: it read `did_not_converge`.
     ///
     /// Only up to [`MAX_FILTER`] mates: each check of a set that fails costs several solves.
-    fn left_failing(&self, solved: &[bool], named: &[usize]) -> Checked {
+    pub(super) fn left_failing(&self, solved: &[bool], named: &[usize]) -> Checked {
         let mut kept: Vec<usize> = (0..solved.len()).filter(|&i| solved[i]).collect();
         if kept.len() < 2 || kept.len() > MAX_FILTER {
             return Checked::Disproved;
