@@ -21,6 +21,47 @@ pub(super) fn solves_from_somewhere(asm: &Assembly, starts: usize, seed: u64) ->
     })
 }
 
+/// Solves the assembly of `text` and checks that it names exactly `set` as its conflict,
+/// marks those mates `conflicting` and no others, and leaves the grounded part where it was.
+/// The report, for more checks.
+fn names_only(text: &str, set: &[&str]) -> loci::assembly::AssemblyReport {
+    let set: Vec<String> = set.iter().map(|s| s.to_string()).collect();
+    let mut asm: Assembly = serde_json::from_str(text).unwrap();
+    let grounded_before = asm.components[0].pose;
+    let r = asm.solve().unwrap();
+    assert_eq!(r.outcome, Outcome::Inconsistent, "{r}");
+    assert_eq!(r.conflicts, vec![set.clone()], "{r}");
+    for m in &r.mates {
+        let conflicting = m.status == MateStatus::Conflicting;
+        assert_eq!(conflicting, set.contains(&m.id), "{r}");
+    }
+    assert_eq!(asm.components[0].pose, grounded_before);
+    r
+}
+
+/// The mates `set` of the assembly of `text` alone: they fail from `whole_starts` random
+/// starts (none when 0, where each failing solve is long), and any of them less one mate
+/// holds from one of `smaller_starts`.
+fn fails_and_is_minimal(text: &str, set: &[&str], whole_starts: usize, smaller_starts: usize) {
+    let whole: Assembly = serde_json::from_str(text).unwrap();
+    let mut alone = whole.clone();
+    alone.mates.retain(|m| set.contains(&m.id.as_str()));
+    if whole_starts > 0 {
+        assert!(
+            !solves_from_somewhere(&alone, whole_starts, 1),
+            "{set:?} held"
+        );
+    }
+    for id in set {
+        let mut less = alone.clone();
+        less.mates.retain(|m| m.id != *id);
+        assert!(
+            solves_from_somewhere(&less, smaller_starts, 2),
+            "without {id}"
+        );
+    }
+}
+
 /// Four parts held by nine mates, eight of them redundant, and a distance from the ground
 /// to one part lengthened (case 27,766 of the random assemblies). The core named a set of
 /// seven mates, then, from the placement where those held, sets of four and five, and each
@@ -33,30 +74,12 @@ pub(super) fn solves_from_somewhere(asm: &Assembly, starts: usize, seed: u64) ->
 #[test]
 fn a_conflict_no_named_set_showed_is_found_mate_by_mate() {
     let text = include_str!("../data/assembly/conflict_found_mate_by_mate.json");
-    let four = ["m1", "m4", "m7", "longer"].map(String::from).to_vec();
-    let mut asm: Assembly = serde_json::from_str(text).unwrap();
-    let grounded_before = asm.components[0].pose;
-    let r = asm.solve().unwrap();
-    assert_eq!(r.outcome, Outcome::Inconsistent, "{r}");
-    assert_eq!(r.conflicts, vec![four.clone()], "{r}");
-    for m in &r.mates {
-        let conflicting = m.status == MateStatus::Conflicting;
-        assert_eq!(conflicting, four.contains(&m.id), "{r}");
-    }
+    let four = ["m1", "m4", "m7", "longer"];
+    let r = names_only(text, &four);
     assert!(r
         .to_string()
         .contains("conflict: {m1, m4, m7, longer} cannot all hold"));
-    assert_eq!(asm.components[0].pose, grounded_before);
-
-    let whole: Assembly = serde_json::from_str(text).unwrap();
-    let mut alone = whole.clone();
-    alone.mates.retain(|m| four.contains(&m.id));
-    assert!(!solves_from_somewhere(&alone, 10, 1), "the four held");
-    for id in &four {
-        let mut three = alone.clone();
-        three.mates.retain(|m| &m.id != id);
-        assert!(solves_from_somewhere(&three, 10, 2), "without {id}");
-    }
+    fails_and_is_minimal(text, &four, 10, 10);
 }
 
 /// Four parts held by thirteen mates, a distance from the ground to one of them lengthened
@@ -73,27 +96,9 @@ fn a_conflict_among_thirteen_mates_is_found_from_random_starts() {
     let text = include_str!("../data/assembly/conflict_of_eleven_of_thirteen.json");
     let eleven = [
         "m1", "m2", "m3", "m4", "m5", "m7", "m8", "m9", "m10", "m11", "longer",
-    ]
-    .map(String::from)
-    .to_vec();
-    let mut asm: Assembly = serde_json::from_str(text).unwrap();
-    let r = asm.solve().unwrap();
-    assert_eq!(r.outcome, Outcome::Inconsistent, "{r}");
-    assert_eq!(r.conflicts, vec![eleven.clone()], "{r}");
-    for m in &r.mates {
-        let conflicting = m.status == MateStatus::Conflicting;
-        assert_eq!(conflicting, eleven.contains(&m.id), "{r}");
-    }
-
-    let whole: Assembly = serde_json::from_str(text).unwrap();
-    let mut alone = whole.clone();
-    alone.mates.retain(|m| eleven.contains(&m.id));
-    assert!(!solves_from_somewhere(&alone, 3, 3), "the eleven held");
-    for id in &eleven {
-        let mut ten = alone.clone();
-        ten.mates.retain(|m| &m.id != id);
-        assert!(solves_from_somewhere(&ten, 20, 4), "without {id}");
-    }
+    ];
+    names_only(text, &eleven);
+    fails_and_is_minimal(text, &eleven, 3, 20);
 }
 
 /// Three free parts held by nine mates, a distance from the ground lengthened (case 267 of
@@ -106,26 +111,7 @@ fn a_conflict_among_thirteen_mates_is_found_from_random_starts() {
 #[test]
 fn a_conflict_the_diagnosis_gave_up_on_is_found_mate_by_mate() {
     let text = include_str!("../data/assembly/conflict_the_diagnosis_gave_up_on.json");
-    let eight = ["m0", "m1", "m2", "m3", "m4", "m6", "m7", "longer"]
-        .map(String::from)
-        .to_vec();
-    let mut asm: Assembly = serde_json::from_str(text).unwrap();
-    let grounded_before = asm.components[0].pose;
-    let r = asm.solve().unwrap();
-    assert_eq!(r.outcome, Outcome::Inconsistent, "{r}");
-    assert_eq!(r.conflicts, vec![eight.clone()], "{r}");
-    for m in &r.mates {
-        let conflicting = m.status == MateStatus::Conflicting;
-        assert_eq!(conflicting, eight.contains(&m.id), "{r}");
-    }
-    assert_eq!(asm.components[0].pose, grounded_before);
-
-    let whole: Assembly = serde_json::from_str(text).unwrap();
-    let mut alone = whole.clone();
-    alone.mates.retain(|m| eight.contains(&m.id));
-    for id in &eight {
-        let mut seven = alone.clone();
-        seven.mates.retain(|m| &m.id != id);
-        assert!(solves_from_somewhere(&seven, 20, 5), "without {id}");
-    }
+    let eight = ["m0", "m1", "m2", "m3", "m4", "m6", "m7", "longer"];
+    names_only(text, &eight);
+    fails_and_is_minimal(text, &eight, 0, 20);
 }
