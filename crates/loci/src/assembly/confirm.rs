@@ -140,19 +140,22 @@ impl Assembly {
                 .or_else(|| self.held_scattered(set))
                 .is_some()
         };
-        // Whether `kept` was checked from the random starts: as a smaller set, once a mate
-        // was taken out.
-        let mut scattered = false;
+        // `kept` was checked from the random starts as a smaller set once a mate was taken
+        // out.
+        let whole = kept.len();
         for i in order {
             let less: Vec<usize> = kept.iter().copied().filter(|&m| m != i).collect();
             if !less.is_empty() && !quick(&less) {
                 kept = less;
-                scattered = true;
             }
         }
         if self
             .holds_alone(&kept, false)
-            .or_else(|| (!scattered).then(|| self.held_scattered(&kept)).flatten())
+            .or_else(|| {
+                (kept.len() == whole)
+                    .then(|| self.held_scattered(&kept))
+                    .flatten()
+            })
             .is_some()
         {
             return Checked::Disproved;

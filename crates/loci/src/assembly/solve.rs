@@ -293,36 +293,31 @@ impl Assembly {
                 .as_ref()
                 .is_some_and(|d| d.outcome == Outcome::DidNotConverge)
             && conflicts.is_empty();
-        let mut disproved = false;
-        let mut found = false;
-        let conflicts = if gave_up {
-            match self.left_failing(&equations_of, &[]) {
-                Checked::Confirmed(sets) => {
-                    found = true;
-                    sets
-                }
-                Checked::Disproved => Vec::new(),
-                Checked::Solved(placed) => {
-                    let (again, report) = *placed;
-                    *self = again;
-                    return Ok(confirm::as_from_start(report, &holds_before));
-                }
-            }
+        // Whether the checks disproved every set, or confirmed the sets they return.
+        let (mut disproved, mut found) = (false, false);
+        let mut conflicts = conflicts;
+        let checked = if gave_up {
+            Some(self.left_failing(&equations_of, &[]))
         } else if named {
-            match self.check_conflicts(conflicts, &equations_of) {
-                Checked::Confirmed(sets) => sets,
-                Checked::Disproved => {
-                    disproved = true;
-                    Vec::new()
-                }
-                Checked::Solved(found) => {
-                    let (again, report) = *found;
-                    *self = again;
-                    return Ok(confirm::as_from_start(report, &holds_before));
-                }
-            }
+            Some(self.check_conflicts(std::mem::take(&mut conflicts), &equations_of))
         } else {
-            conflicts
+            None
+        };
+        let conflicts = match checked {
+            None => conflicts,
+            Some(Checked::Confirmed(sets)) => {
+                found = true;
+                sets
+            }
+            Some(Checked::Disproved) => {
+                disproved = true;
+                Vec::new()
+            }
+            Some(Checked::Solved(placed)) => {
+                let (again, report) = *placed;
+                *self = again;
+                return Ok(confirm::as_from_start(report, &holds_before));
+            }
         };
         let in_conflict: Vec<bool> = (0..ids.len())
             .map(|i| conflicts.iter().any(|s| s.contains(&i)))

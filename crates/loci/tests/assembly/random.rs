@@ -928,6 +928,7 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool) -> Vec<String> {
         }
         Outcome::Inconsistent => {
             seen.longer_conflict += 1;
+            let conflict_starts = env("LOCI_RANDOM_CONFLICT_STARTS").unwrap_or(0) as usize;
             if r.conflicts.is_empty() {
                 wrong.push(format!(
                     "seed {seed}: lengthened: inconsistent, no set named: {r}"
@@ -946,10 +947,9 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool) -> Vec<String> {
                          and every other mate holds at the placement"
                     ));
                 }
-                let scattered_starts = env_count("LOCI_RANDOM_CONFLICT_STARTS");
                 if solves(&b2, &chosen, &b2.start)
                     || solves(&b2, &chosen, &b.start)
-                    || (0..scattered_starts)
+                    || (0..conflict_starts)
                         .any(|k| solves(&b2, &chosen, &scattered(&b, seed, usize::MAX, k)))
                 {
                     wrong.push(format!("seed {seed}: conflict {set:?} solves alone"));
@@ -1024,7 +1024,6 @@ fn run_all() -> Seen {
         assert!(wrong.is_empty(), "{}", wrong.join("\n"));
         return seen;
     }
-    let env = |name: &str| -> Option<u64> { std::env::var(name).ok()?.trim().parse().ok() };
     let count = env("LOCI_RANDOM_ASSEMBLIES");
     let first = env("LOCI_RANDOM_FIRST_ASSEMBLY");
     let from = first.unwrap_or(0);
@@ -1066,10 +1065,7 @@ fn random_assemblies_solve_and_name_minimal_conflicts_that_fail_alone() {
     }
 }
 
-/// The count an environment variable gives, 0 without one.
-fn env_count(name: &str) -> usize {
-    std::env::var(name)
-        .ok()
-        .and_then(|v| v.trim().parse().ok())
-        .unwrap_or(0)
+/// The number an environment variable gives, if any.
+fn env(name: &str) -> Option<u64> {
+    std::env::var(name).ok()?.trim().parse().ok()
 }
