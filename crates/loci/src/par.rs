@@ -38,6 +38,25 @@ where
         .collect()
 }
 
+/// The first `Some` of `f(0)`, `f(1)`, … `f(n - 1)` in index order, the same whatever the
+/// number of threads: with `parallel` (and the `parallel` feature) the calls run on the pool,
+/// each exactly as it would alone, and those after an index that gave `Some` are skipped where
+/// they have not begun. For a few costly independent tries (solves from different starts),
+/// where most fail and each failure costs a full solve.
+pub(crate) fn first_some<R: Send>(
+    n: usize,
+    parallel: bool,
+    f: impl Fn(usize) -> Option<R> + Sync + Send,
+) -> Option<R> {
+    #[cfg(feature = "parallel")]
+    if parallel && n > 1 {
+        use rayon::prelude::*;
+        return (0..n).into_par_iter().find_map_first(f);
+    }
+    let _ = parallel;
+    (0..n).find_map(f)
+}
+
 /// Drops `items`: when there are many, on the thread pool after the caller has moved on, and
 /// spread over the cores. Freeing the thousands of small components of a large solve costs
 /// about as much as building them did, and the caller is waiting for its report, not for that.
