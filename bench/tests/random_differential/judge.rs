@@ -5,7 +5,9 @@
 //! - on a satisfiable system (base and redundant variants) a claim of inconsistency is wrong;
 //! - on a conflicting system inconsistency is right, and loci's named set is checked by
 //!   solving those constraints alone (same entities, same start): if they hold together the
-//!   set is wrong; a set that still fails without one of its members is noted as not minimal;
+//!   set is wrong; where it still fails without one of its members (the solve's list is the
+//!   constraints on the dependence where it stopped, not promised minimal), the sets the
+//!   diagnosis names are checked the same way, and a note says whether they are minimal;
 //! - not converging, a crash or a refusal is a failure, not a wrong answer.
 //!
 //! [`resolve`] runs the same case through one [`loci::Solver`] several times (a second start,
@@ -84,6 +86,52 @@ fn solve_alone(sys: &System, keep: &[ConstraintId], size: f64) -> (Outcome, bool
     }
 }
 
+/// Whether every set with one member of `set` less holds alone.
+fn minimal(case: &Case, set: &[ConstraintId]) -> bool {
+    set.iter().all(|m| {
+        let rest: Vec<ConstraintId> = set.iter().copied().filter(|c| c != m).collect();
+        solve_alone(&case.system, &rest, case.size).1
+    })
+}
+
+/// A note on a case whose solve named more constraints than a conflict needs. The solve's
+/// list is the constraints on the dependence where it stopped (SolveSpace's is of the same
+/// kind), not promised minimal; naming the guilty constraints is the diagnosis's work
+/// (`loci::diagnose`), whose sets are checked here the same way: each fails alone and holds
+/// without any one member. Where one does not, the note says so: a finding.
+fn diagnosed_sets(case: &Case) -> String {
+    let d = match loci::diagnose(&case.system, GROUP.into(), &Config::default()) {
+        Ok(d) => d,
+        Err(e) => return format!("conflict set of the diagnosis: error {e}"),
+    };
+    let sets: Vec<Vec<ConstraintId>> = d
+        .conflicting
+        .iter()
+        .map(|c| {
+            c.members
+                .iter()
+                .filter_map(|m| match m {
+                    loci::Member::Constraint(c) => Some(*c),
+                    loci::Member::Entity(_) => None,
+                })
+                .collect()
+        })
+        .collect();
+    let bad: Vec<String> = sets
+        .iter()
+        .filter(|set| solve_alone(&case.system, set, case.size).1 || !minimal(case, set))
+        .map(|set| handles(set))
+        .collect();
+    match (sets.is_empty(), bad.is_empty()) {
+        (true, _) => "solver's list not minimal; the diagnosis names no conflict".into(),
+        (false, true) => "solver's list not minimal; the diagnosis's sets are".into(),
+        (false, false) => format!(
+            "conflict set of the diagnosis {} not minimal",
+            bad.join(" ")
+        ),
+    }
+}
+
 /// loci on the case with `loci::solve`: its grade, what it said, and notes.
 pub fn loci(case: &Case) -> (Grade, String, Vec<String>) {
     let mut sys = case.system.clone();
@@ -135,15 +183,8 @@ pub fn loci(case: &Case) -> (Grade, String, Vec<String>) {
                     handles(set)
                 ))
             } else {
-                if set.len() <= 8 {
-                    let minimal = set.iter().all(|m| {
-                        let rest: Vec<ConstraintId> =
-                            set.iter().copied().filter(|c| c != m).collect();
-                        solve_alone(&case.system, &rest, case.size).1
-                    });
-                    if !minimal {
-                        notes.push(format!("conflict set {} not minimal", handles(set)));
-                    }
+                if set.len() <= 8 && !minimal(case, set) {
+                    notes.push(diagnosed_sets(case));
                 }
                 Grade::Right
             }

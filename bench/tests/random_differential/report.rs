@@ -279,7 +279,7 @@ pub fn summary(
     for r in rows {
         for n in &r.notes {
             let kind = if n.starts_with("conflict set") {
-                "conflict set not minimal".to_string()
+                "conflict set of the diagnosis not minimal".to_string()
             } else {
                 n.clone()
             };

@@ -373,10 +373,13 @@ pub(crate) fn name_conflicts(
 
 /// Whether the members of `set`, kept alone in a system of their own (with the entities and
 /// parameters they refer to), solve when built up one constraint at a time with SolveSpace's
-/// steps ([`crate::solve::builds_alone`]).
+/// steps ([`crate::solve::builds_alone`]), or from starts drawn at random
+/// ([`crate::solve::holds_scattered`]).
 fn built_alone(sys: &System, group: GroupId, set: &[Member], cfg: &Config) -> bool {
-    kept_alone(sys, set.iter().copied())
-        .is_some_and(|part| crate::solve::builds_alone(&part, group, cfg))
+    kept_alone(sys, set.iter().copied()).is_some_and(|part| {
+        crate::solve::builds_alone(&part, group, cfg)
+            || crate::solve::holds_scattered(&part, group, cfg)
+    })
 }
 
 /// The members of a set kept alone in a system of their own, with the entities and

@@ -38,7 +38,7 @@ pub use report::{Outcome, Report};
 
 use crate::equations::{compile_group, still_duplicates, Carried, Link, Owner};
 use crate::error::SolveError;
-use crate::model::{ConstraintId, GroupId, ParamId, System};
+use crate::model::{ConstraintId, ConstraintKind, GroupId, ParamId, System};
 use crate::par;
 use newton::Component;
 use plan::{substitute, Plan};
@@ -120,6 +120,46 @@ pub(crate) fn builds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     let built = built_least(sys, group, &[], cfg, &mut cache).is_ok_and(|found| found.is_some());
     cache.discard();
     built
+}
+
+/// Starts drawn at random that [`holds_scattered`] solves a set from: two at each of four
+/// spreads, from a fifth of each parameter's size to twice it.
+const SCATTERED_STARTS: [f64; 8] = [0.25, 0.25, 0.5, 0.5, 1.0, 1.0, 2.0, 2.0];
+
+/// Whether `group` of `sys` solves, as [`holds_alone`] solves it, from one of
+/// [`SCATTERED_STARTS`]: each of the group's parameters `v` moved by up to `s (1 + |v|)`
+/// either way (the same starts on every run). Every start near the drawing can lead Newton
+/// into the same fold: a horizontal line 0.9 long whose end a 51-degree angle to a line 9
+/// long must turn, the least movement towards the angle runs the short line through zero
+/// length, where its angle's row and the horizontal's become dependent, and the pair was named
+/// a conflict (SolveSpace stops there too, without claiming one). From a start drawn further
+/// off the pair solves: a set that does is no conflict. Only a set about to be named pays.
+pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> bool {
+    if sys.validate().is_err() || check_group(sys, group).is_err() {
+        return false;
+    }
+    let seed = sys.params().iter().fold(0x5CA7_7E2E_D5EEu64, |h, p| {
+        h.wrapping_mul(0x100_0000_01B3) ^ p.val.to_bits()
+    });
+    // A point held where it is dragged stays: moved, it would be held somewhere else.
+    let held: Vec<ParamId> = sys
+        .constraints()
+        .iter()
+        .filter(|c| c.group == group && c.kind == ConstraintKind::WhereDragged)
+        .filter_map(|c| c.pt_a.and_then(|e| sys.entity(e)))
+        .flat_map(|e| e.kind.params().iter().copied())
+        .collect();
+    let mut rng = crate::geom::SplitMix(seed);
+    SCATTERED_STARTS.iter().any(|&spread| {
+        let mut moved = sys.clone();
+        for p in moved
+            .params_mut()
+            .filter(|p| p.group == group && !held.contains(&p.h))
+        {
+            p.val += spread * (1.0 + p.val.abs()) * rng.uniform();
+        }
+        holds_alone(&moved, group, cfg)
+    })
 }
 
 /// The solve of `group` from a solution found another way when Newton from the drawing
