@@ -39,21 +39,19 @@ where
 }
 
 /// The first `Some` of `f(0)`, `f(1)`, … `f(n - 1)` in index order, the same whatever the
-/// number of threads: with `parallel` (and the `parallel` feature) the calls run on the pool,
-/// each exactly as it would alone, and those after an index that gave `Some` are skipped where
-/// they have not begun. For a few costly independent tries (solves from different starts),
-/// where most fail and each failure costs a full solve.
+/// number of threads: with the `parallel` feature the calls run on the pool, each exactly as
+/// it would alone, and those after an index that gave `Some` are skipped where they have not
+/// begun. For a few costly independent tries (solves from different starts), where most fail
+/// and each failure costs a full solve.
 pub(crate) fn first_some<R: Send>(
     n: usize,
-    parallel: bool,
     f: impl Fn(usize) -> Option<R> + Sync + Send,
 ) -> Option<R> {
     #[cfg(feature = "parallel")]
-    if parallel && n > 1 {
+    if n > 1 {
         use rayon::prelude::*;
         return (0..n).into_par_iter().find_map_first(f);
     }
-    let _ = parallel;
     (0..n).find_map(f)
 }
 

@@ -259,7 +259,7 @@ impl Assembly {
         // The starts are tried on every core, the first that holds in their order kept: a
         // set that fails pays a solve per start, about half of a conflict's check on two
         // cores (0.4 to 1.1 s each time for seed 34,592's sets).
-        par::first_some(starts.len(), true, |k| {
+        par::first_some(starts.len(), |k| {
             self.posed(&starts[k]).holds_alone(set, true)
         })
     }

@@ -98,6 +98,11 @@ pub(crate) fn holds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     if sys.validate().is_err() || check_group(sys, group).is_err() {
         return false;
     }
+    solves_as_it_stands(sys, group, cfg)
+}
+
+/// [`holds_alone`] on a system already validated for `group`.
+fn solves_as_it_stands(sys: &System, group: GroupId, cfg: &Config) -> bool {
     let cfg = Config {
         name_conflicts: false,
         ..cfg.clone()
@@ -123,7 +128,7 @@ pub(crate) fn builds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
 }
 
 /// Starts drawn at random that [`holds_scattered`] solves a set from: two at each of four
-/// spreads, from a fifth of each parameter's size to twice it.
+/// spreads, from a quarter of each parameter's size to twice it.
 const SCATTERED_STARTS: [f64; 8] = [0.25, 0.25, 0.5, 0.5, 1.0, 1.0, 2.0, 2.0];
 
 /// Whether `group` of `sys` solves, as [`holds_alone`] solves it, from one of
@@ -158,7 +163,8 @@ pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> boo
         {
             p.val += spread * (1.0 + p.val.abs()) * rng.uniform();
         }
-        holds_alone(&moved, group, cfg)
+        // Moved by finite amounts, the values stay numbers: validated once, above.
+        solves_as_it_stands(&moved, group, cfg)
     })
 }
 
