@@ -6,7 +6,7 @@
 mod common;
 
 use common::{Sketch, WP};
-use loci::{solve, Config, Outcome, System};
+use loci::{solve, Config, Member, Outcome, System};
 use std::path::PathBuf;
 
 fn data(name: &str) -> PathBuf {
@@ -22,19 +22,7 @@ fn load(name: &str) -> System {
 
 /// Cases whose right outcome loci does not reach yet, with what it says instead. Each still
 /// runs: it must never claim a solution, and a satisfiable one never a conflict.
-const NOT_YET: &[(&str, &str)] = &[
-    (
-        "diff_seed430180_folded_pair.json",
-        "did_not_converge: from near the drawing Newton runs the short horizontal line through \
-         zero length; SolveSpace stops too (did_not_converge)",
-    ),
-    (
-        "diff_seed451288_conflicting.json",
-        "did_not_converge: the deletion filter finds the angle and the horizontal failing \
-         without the vertical (they fold near the drawing), and that pair is not named, as it \
-         holds from starts drawn further off; SolveSpace names the angle",
-    ),
-];
+const NOT_YET: &[(&str, &str)] = &[];
 
 #[test]
 fn every_known_case_gives_the_right_outcome() {
@@ -478,24 +466,44 @@ fn a_set_that_holds_alone_is_never_named() {
 /// the drawing ends with the short line about to vanish, where the angle's row and the
 /// horizontal's are dependent: the pair was named a conflict by the solve and by the
 /// diagnosis. A set about to be named is now also solved alone from starts drawn further off,
-/// where the pair holds: neither names it (both read `did_not_converge`, as SolveSpace does),
-/// and the whole system of seed 430,180, a horizontal and a vertical line with that angle
-/// between them, still names all three.
+/// where the pair holds: neither names it, and the whole solves from there (SolveSpace reads
+/// `did_not_converge`). The whole system of seed 430,180, a horizontal and a vertical line with
+/// that angle between them, still names all three.
 ///
 /// Of the same kind, seed 451,288: an angle of 140 degrees from a horizontal line to a
-/// vertical one (constraints 1, 8 and 4). The deletion filter finds the angle and the
-/// horizontal failing without the vertical (the pair folds near the drawing) and so shrinks the
-/// conflict to the pair, which the check above then drops: the solve names nothing and reads
-/// `did_not_converge` (among the cases not yet right), where it named the pair before.
+/// vertical one (constraints 1, 8 and 4). The deletion filter, solving near the drawing, finds
+/// the angle and the horizontal failing without the vertical (the pair folds) and shrinks the
+/// conflict to the pair, which the check above then drops. The search runs again with the
+/// pair's solution from the random start among its starts; there the pair holds, and the
+/// three are named (before: the pair, then nothing).
 #[test]
 fn sets_that_fold_the_sketch_near_the_drawing_are_not_named() {
     let sys = load("diff_seed430180_folded_pair.json");
-    let r = solve(&mut sys.clone(), 2.into(), &[], &Config::default()).unwrap();
-    assert_ne!(r.outcome, Outcome::Inconsistent, "{r:?}");
-    assert!(r.failed.is_empty() || r.outcome != Outcome::Inconsistent);
+    let mut solved = sys.clone();
+    let r = solve(&mut solved, 2.into(), &[], &Config::default()).unwrap();
+    assert_eq!(r.outcome, Outcome::Okay, "{r:?}");
+    assert!(r.failed.is_empty() && r.residual < 1e-10, "{r:?}");
+    // Judged apart from the solve: the line is horizontal and the angle is 51.2 degrees.
+    let at = |h: u32| solved.params().iter().find(|p| p.h.0 == h).unwrap().val;
+    let again = solve(&mut solved.clone(), 2.into(), &[], &Config::default()).unwrap();
+    assert!(again.outcome.is_ok() && again.iterations == 0, "{again:?}");
+    assert!(
+        (at(9) - at(11)).abs() < 1e-9,
+        "the short line is not horizontal"
+    );
+    let (d6, d8) = (
+        [at(10) - at(8), at(11) - at(9)],
+        [at(12) - at(10), at(13) - at(11)],
+    );
+    let cos = (d6[0] * d8[0] + d6[1] * d8[1]) / (d6[0].hypot(d6[1]) * d8[0].hypot(d8[1]));
+    assert!(
+        (cos.abs() - 51.20708754352129f64.to_radians().cos()).abs() < 1e-9,
+        "the lines meet at {} degrees",
+        cos.acos().to_degrees()
+    );
     let d = sys.diagnose(2).unwrap();
     assert!(d.conflicting.is_empty(), "{:?}", d.conflicting);
-    assert_ne!(d.outcome, Outcome::Inconsistent);
+    assert!(d.outcome.is_ok(), "{}", d.outcome);
     // The pair holds: the short line made horizontal and the long one turned to 51 degrees
     // from it (directions start minus end, as the angle measures them) solve as they are.
     let mut held = sys.clone();
@@ -514,15 +522,23 @@ fn sets_that_fold_the_sketch_near_the_drawing_are_not_named() {
     let r = solve(&mut held, 2.into(), &[], &Config::default()).unwrap();
     assert!(r.outcome.is_ok() && r.iterations == 0, "{r:?}");
 
-    // Seed 451,288: no false pair named, and nothing claimed.
+    // Seed 451,288: the three named, by the solve and by the diagnosis.
     let sys = load("diff_seed451288_conflicting.json");
     let r = solve(&mut sys.clone(), 2.into(), &[], &Config::default()).unwrap();
-    let pair: Vec<loci::ConstraintId> = [1u32, 8].map(Into::into).to_vec();
-    assert!(!r.outcome.is_ok(), "{r:?}");
-    assert!(
-        r.outcome != Outcome::Inconsistent || r.failed != pair,
-        "{r:?}"
-    );
+    let three: Vec<loci::ConstraintId> = [1u32, 4, 8].map(Into::into).to_vec();
+    assert_eq!(r.outcome, Outcome::Inconsistent, "{r:?}");
+    assert_eq!(r.failed, three);
     let d = sys.diagnose(2).unwrap();
-    assert!(d.conflicting.iter().all(|c| c.members.len() != 2), "{d:?}");
+    assert_eq!(d.outcome, Outcome::Inconsistent);
+    assert_eq!(d.conflicting.len(), 1, "{:?}", d.conflicting);
+    let mut named: Vec<loci::ConstraintId> = d.conflicting[0]
+        .members
+        .iter()
+        .map(|m| match *m {
+            Member::Constraint(c) => c,
+            Member::Entity(e) => panic!("entity {e:?} named"),
+        })
+        .collect();
+    named.sort_unstable();
+    assert_eq!(named, three);
 }

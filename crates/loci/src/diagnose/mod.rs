@@ -53,6 +53,17 @@ use unmerged::{Equations, Linear};
 /// # Errors
 /// An invalid model or a bad option, as [`crate::solve`].
 pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis, SolveError> {
+    diagnosed(sys, group, cfg, true)
+}
+
+/// [`diagnose`]; `elsewhere`: whether it may diagnose the sketch at a solution found from
+/// where a set it dropped holds, rather than where the solve stopped.
+fn diagnosed(
+    sys: &System,
+    group: GroupId,
+    cfg: &Config,
+    elsewhere: bool,
+) -> Result<Diagnosis, SolveError> {
     cfg.check()?;
     sys.validate()?;
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
@@ -84,20 +95,47 @@ pub fn diagnose(sys: &System, group: GroupId, cfg: &Config) -> Result<Diagnosis,
             Some(r) => circuits::circuits(&eqs, m, r, cfg),
             None => Vec::new(),
         });
-    let (mut conflicting, _) = conflict_sets(
-        &eqs,
-        moved.as_ref().unwrap_or(&lin),
-        moved_circuits.as_ref().unwrap_or(&circuits),
-        &[&values, &start],
-        report.outcome,
-        cfg,
-        usize::MAX,
-    );
-    if ran_off(&eqs, &start, report.residual) {
-        conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
+    // As the solve names them: none that holds alone when built up with SolveSpace's steps or
+    // from random starts, searched again from where a dropped set holds ([`name_conflicts`]).
+    let mut found: Vec<Vec<f64>> = Vec::new();
+    let mut round = 0;
+    let mut conflicting = loop {
+        let mut starts: Vec<&[f64]> = vec![&values, &start];
+        starts.extend(found.iter().map(Vec::as_slice));
+        let (mut conflicting, _) = conflict_sets(
+            &eqs,
+            moved.as_ref().unwrap_or(&lin),
+            moved_circuits.as_ref().unwrap_or(&circuits),
+            &starts,
+            report.outcome,
+            cfg,
+            usize::MAX,
+        );
+        if ran_off(&eqs, &start, report.residual) {
+            conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
+        }
+        let mut solutions = Vec::new();
+        conflicting.retain(|s| !built_alone(sys, group, &s.members, cfg, &mut solutions));
+        round += 1;
+        if solutions.is_empty() || round > REGROWN {
+            found.extend(solutions);
+            break conflicting;
+        }
+        found.extend(solutions);
+    };
+    // Nothing fails, and the whole solves from where a set dropped above holds: the solve
+    // finds that solution too ([`crate::solve`]), and the diagnosis is of the sketch there.
+    if elsewhere && !report.outcome.is_ok() && conflicting.is_empty() {
+        if let Some(at) = crate::solve::solution_from(sys, group, cfg, &found) {
+            let mut solved = sys.clone();
+            solved.write_group_values(group, &at);
+            let mut there = diagnosed(&solved, group, cfg, false)?;
+            if there.outcome.is_ok() {
+                there.iterations += report.iterations;
+                return Ok(there);
+            }
+        }
     }
-    // As the solve names them: none that holds alone when built up with SolveSpace's steps.
-    conflicting.retain(|s| !built_alone(sys, group, &s.members, cfg));
     let tolerance = rank.as_ref().map_or(cfg.rank_tolerance, |r| r.tolerance);
     let mut redundant = redundant::redundant_sets(&eqs, &lin, &circuits, tolerance);
     // Constraints written more than once never reach the equations: each copy is redundant.
@@ -216,6 +254,10 @@ impl System {
 /// there and from the drawing, replaces the solver's list. When no set fails on its own, the
 /// verdict was a guess: the outcome becomes `did_not_converge`, with the constraints left
 /// unsatisfied where the solve stopped. Returns whether some set was shown to fail.
+///
+/// A set dropped because it holds alone from a start drawn at random leaves the values there
+/// on `held` (every parameter of `sys`): starts from which the whole may solve.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn name_conflicts(
     sys: &System,
     group: GroupId,
@@ -224,12 +266,12 @@ pub(crate) fn name_conflicts(
     report: &mut Report,
     kernels: &[Kernel],
     links: &[Link],
+    held: &mut Vec<Vec<f64>>,
 ) -> bool {
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
-    let starts: [&[f64]; 2] = [values, &start];
     // The sets, and whether they were found only by shrinking the whole group: no dependence
     // where the solve stopped shows them, only solves that fail.
-    let sets_in = |eqs: &Equations| -> (Vec<ConflictSet>, bool) {
+    let sets_in = |eqs: &Equations, starts: &[&[f64]]| -> (Vec<ConflictSet>, bool) {
         let lin = eqs.linearise(values);
         let lin = eqs
             .linearise_off_singular(values, &lin, cfg.tolerance)
@@ -243,7 +285,7 @@ pub(crate) fn name_conflicts(
                 eqs,
                 &lin,
                 circuits,
-                &starts,
+                starts,
                 report.outcome,
                 cfg,
                 cfg.verify_conflicts_up_to,
@@ -259,7 +301,7 @@ pub(crate) fn name_conflicts(
             let (sets, searched) = sets_of(&first);
             if let Some(shared) = shared_members(&sets) {
                 if sets.iter().all(|s| s.verified)
-                    && minimal::all_but_hold(eqs, &shared, &starts, cfg)
+                    && minimal::all_but_hold(eqs, &shared, starts, cfg)
                 {
                     return (sets, searched);
                 }
@@ -277,57 +319,77 @@ pub(crate) fn name_conflicts(
         .map(|&c| Owner::Constraint(c))
         .chain(report.failed_entities.iter().map(|&e| Owner::Entity(e)))
         .collect();
-    let (mut sets, mut searched) = (Vec::new(), false);
-    if !seed.is_empty() {
-        let keep = focus::focus(sys, group, &seed, kernels, links);
-        if let Ok(eqs) = Equations::only(sys, group, &start, &|o| keep.contains(&o)) {
-            (sets, searched) = sets_in(&eqs);
+    // A set dropped below because it holds from a start drawn at random leaves its solution:
+    // the search runs again with that among its starts, so that the deletion filter, which
+    // solves near the drawing only, sees the part hold there and keeps the member that makes
+    // the real conflict (seed 451,288 of the random sketches: an angle of 140 degrees from a
+    // horizontal line to a vertical one, shrunk to the horizontal and the angle, which fold
+    // near the drawing like the pair of `holds_scattered`, and then named nothing).
+    let mut found: Vec<Vec<f64>> = Vec::new();
+    let mut round = 0;
+    let (sets, searched, whole) = loop {
+        let mut starts: Vec<&[f64]> = vec![values, &start];
+        starts.extend(found.iter().map(Vec::as_slice));
+        let (mut sets, mut searched) = (Vec::new(), false);
+        if !seed.is_empty() {
+            let keep = focus::focus(sys, group, &seed, kernels, links);
+            if let Ok(eqs) = Equations::only(sys, group, &start, &|o| keep.contains(&o)) {
+                (sets, searched) = sets_in(&eqs, &starts);
+            }
         }
-    }
-    let mut whole = None;
-    if sets.is_empty() {
-        let Ok(all) = Equations::new(sys, group, &start) else {
-            return false;
-        };
-        (sets, searched) = sets_in(&all);
-        whole = Some(all);
-    }
-    // Only a large set can be dropped for a solve that ran off: the whole group's equations
-    // are compiled for the test only then.
-    if sets.iter().any(|s| s.members.len() > minimal::LARGE_SET) {
-        if whole.is_none() {
-            whole = Equations::new(sys, group, &start).ok();
+        let mut whole = None;
+        if sets.is_empty() {
+            let Ok(all) = Equations::new(sys, group, &start) else {
+                return false;
+            };
+            (sets, searched) = sets_in(&all, &starts);
+            whole = Some(all);
         }
-        if whole
-            .as_ref()
-            .is_some_and(|all| ran_off(all, &start, report.residual))
-        {
-            sets.retain(|s| s.members.len() <= minimal::LARGE_SET);
+        // Only a large set can be dropped for a solve that ran off: the whole group's
+        // equations are compiled for the test only then.
+        if sets.iter().any(|s| s.members.len() > minimal::LARGE_SET) {
+            if whole.is_none() {
+                whole = Equations::new(sys, group, &start).ok();
+            }
+            if whole
+                .as_ref()
+                .is_some_and(|all| ran_off(all, &start, report.residual))
+            {
+                sets.retain(|s| s.members.len() <= minimal::LARGE_SET);
+            }
         }
-    }
+        // Before a set is named, its constraints are kept alone in a system of their own and
+        // built up with SolveSpace's steps, the one way of looking for a solution that `solve`
+        // takes and the checks above do not; a set too large to shrink, only checked quickly
+        // so far, is also checked every way. A set that holds alone is no conflict, whatever
+        // the solve of the whole did: kept alone, 6 constraints of a fuzzed sketch solved that
+        // way, and 17 of another that only the quick check had looked at.
+        let mut solutions = Vec::new();
+        if !sets.is_empty() {
+            let quick = |s: &ConflictSet| !s.verified && s.members.len() > minimal::LARGE_SET;
+            if whole.is_none() && sets.iter().any(quick) {
+                whole = Equations::new(sys, group, &start).ok();
+            }
+            // A set that holds either way is dropped.
+            sets.retain(|s| {
+                let holds = built_alone(sys, group, &s.members, cfg, &mut solutions)
+                    || (quick(s)
+                        && whole
+                            .as_ref()
+                            .is_some_and(|all| minimal::holds(all, &s.members, &starts, cfg)));
+                !holds
+            });
+        }
+        round += 1;
+        if solutions.is_empty() || round > REGROWN {
+            held.extend(found);
+            held.extend(solutions);
+            break (sets, searched, whole);
+        }
+        found.extend(solutions);
+    };
     report.failed.clear();
     report.failed_entities.clear();
-    // Before a set is named, its constraints are kept alone in a system of their own and built
-    // up with SolveSpace's steps, the one way of looking for a solution that `solve` takes and
-    // the checks above do not; a set too large to shrink, only checked quickly so far, is also
-    // checked every way. A set that holds alone is no conflict, whatever the solve of the
-    // whole did: kept alone, 6 constraints of a fuzzed sketch solved that way, and 17 of
-    // another that only the quick check had looked at.
-    if !sets.is_empty() {
-        let quick = |s: &ConflictSet| !s.verified && s.members.len() > minimal::LARGE_SET;
-        if whole.is_none() && sets.iter().any(quick) {
-            whole = Equations::new(sys, group, &start).ok();
-        }
-        // A set that holds either way is dropped.
-        let holds = |s: &ConflictSet| {
-            built_alone(sys, group, &s.members, cfg)
-                || (quick(s)
-                    && whole
-                        .as_ref()
-                        .is_some_and(|all| minimal::holds(all, &s.members, &starts, cfg)))
-        };
-        sets.retain(|s| !holds(s));
-    }
     // Shown only by a set that failed on its own from where the solve stopped, from the
     // drawing and built up one constraint at a time: a large set, checked quickly, may fail
     // only because Newton folded the sketch on its way. Nor by a set found only by shrinking
@@ -375,12 +437,37 @@ pub(crate) fn name_conflicts(
 /// parameters they refer to), solve when built up one constraint at a time with SolveSpace's
 /// steps ([`crate::solve::builds_alone`]), or from starts drawn at random
 /// ([`crate::solve::holds_scattered`]).
-fn built_alone(sys: &System, group: GroupId, set: &[Member], cfg: &Config) -> bool {
-    kept_alone(sys, set.iter().copied()).is_some_and(|part| {
-        crate::solve::builds_alone(&part, group, cfg)
-            || crate::solve::holds_scattered(&part, group, cfg)
-    })
+///
+/// Where only a random start solves it, the values there are pushed on `solutions`: every
+/// parameter of `sys` as it stands but those of the set, which are where it holds.
+fn built_alone(
+    sys: &System,
+    group: GroupId,
+    set: &[Member],
+    cfg: &Config,
+    solutions: &mut Vec<Vec<f64>>,
+) -> bool {
+    let Some(part) = kept_alone(sys, set.iter().copied()) else {
+        return false;
+    };
+    if crate::solve::builds_alone(&part, group, cfg) {
+        return true;
+    }
+    let Some(held) = crate::solve::holds_scattered(&part, group, cfg) else {
+        return false;
+    };
+    let mut values: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
+    for (p, v) in part.params().iter().zip(held) {
+        if let Some(i) = sys.param_index(p.h) {
+            values[i] = v;
+        }
+    }
+    solutions.push(values);
+    true
 }
+
+/// How many times [`name_conflicts`] searches again from the solutions of sets it dropped.
+const REGROWN: usize = 2;
 
 /// The members of a set kept alone in a system of their own, with the entities and
 /// parameters they refer to ([`System::part`]).

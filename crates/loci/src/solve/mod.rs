@@ -103,26 +103,34 @@ pub(crate) fn holds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
 
 /// [`holds_alone`] on a system already validated for `group`.
 fn solves_as_it_stands(sys: &System, group: GroupId, cfg: &Config) -> bool {
+    solution_as_it_stands(sys, group, cfg).is_some()
+}
+
+/// The values of every parameter where [`solves_as_it_stands`] solves `group`, if it does.
+fn solution_as_it_stands(sys: &System, group: GroupId, cfg: &Config) -> Option<Vec<f64>> {
     let cfg = Config {
         name_conflicts: false,
         ..cfg.clone()
     };
     let mut cache = Cache::default();
     let solved = solve_values_checked(sys, group, &[], &cfg, &mut cache)
-        .is_ok_and(|(report, _, _)| report.outcome.is_ok());
+        .ok()
+        .and_then(|(report, values, _)| report.outcome.is_ok().then_some(values));
     cache.discard();
     solved
 }
 
-/// Whether `group` of `sys` solves when built up one constraint at a time with steps of least
-/// movement ([`built_least`]), the one way [`rescued`] looks for a solution that the
-/// diagnosis's own checks of a set do not take: the last check of a set before it is named.
+/// Whether `group` of `sys` solves by one of the ways [`rescued`] looks for a solution when
+/// Newton from the drawing reaches none: the last check of a set before it is named, so that
+/// no set is named that [`solve`] solves alone. Built up with steps of least movement
+/// ([`built_least`]) only, a set of 30 constraints of a fuzzed sketch (searched again from
+/// where a smaller set held) was named that solved alone with some angles turned.
 pub(crate) fn builds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     if sys.validate().is_err() || check_group(sys, group).is_err() {
         return false;
     }
     let mut cache = Cache::default();
-    let built = built_least(sys, group, &[], cfg, &mut cache).is_ok_and(|found| found.is_some());
+    let built = rescued(sys, group, &[], cfg, &mut cache).is_ok_and(|found| found.is_some());
     cache.discard();
     built
 }
@@ -139,9 +147,11 @@ const SCATTERED_STARTS: [f64; 8] = [0.25, 0.25, 0.5, 0.5, 1.0, 1.0, 2.0, 2.0];
 /// length, where its angle's row and the horizontal's become dependent, and the pair was named
 /// a conflict (SolveSpace stops there too, without claiming one). From a start drawn further
 /// off the pair solves: a set that does is no conflict. Only a set about to be named pays.
-pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> bool {
+///
+/// Returns the values of every parameter of `sys` where the group holds, if it does.
+pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> Option<Vec<f64>> {
     if sys.validate().is_err() || check_group(sys, group).is_err() {
-        return false;
+        return None;
     }
     let seed = sys.params().iter().fold(0x5CA7_7E2E_D5EEu64, |h, p| {
         h.wrapping_mul(0x100_0000_01B3) ^ p.val.to_bits()
@@ -155,7 +165,7 @@ pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> boo
         .flat_map(|e| e.kind.params().iter().copied())
         .collect();
     let mut rng = crate::geom::SplitMix(seed);
-    SCATTERED_STARTS.iter().any(|&spread| {
+    SCATTERED_STARTS.iter().find_map(|&spread| {
         let mut moved = sys.clone();
         for p in moved
             .params_mut()
@@ -164,7 +174,7 @@ pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> boo
             p.val += spread * (1.0 + p.val.abs()) * rng.uniform();
         }
         // Moved by finite amounts, the values stay numbers: validated once, above.
-        solves_as_it_stands(&moved, group, cfg)
+        solution_as_it_stands(&moved, group, cfg)
     })
 }
 
@@ -365,6 +375,7 @@ fn solve_cached(
         // set is found: the rows of an impossible system become dependent only at its
         // least-squares point, which Newton may not reach.
         let used = plain.as_ref().unwrap_or(cache);
+        let mut held = Vec::new();
         let mut proven = crate::diagnose::name_conflicts(
             sys,
             group,
@@ -373,6 +384,7 @@ fn solve_cached(
             &mut report,
             &used.kernels,
             &used.links,
+            &mut held,
         );
         // Damped steps may have stopped short of that point, once what was left to gain at
         // their rate was small (`Config::settle`); where nothing was shown from there, they
@@ -395,6 +407,7 @@ fn solve_cached(
                     &mut again,
                     &used.kernels,
                     &used.links,
+                    &mut held,
                 )
             };
             if settled {
@@ -403,8 +416,13 @@ fn solve_cached(
         }
         // Nothing shown to fail on its own: Newton from the whole drawing may have folded the
         // sketch on its way. Look for a solution another way ([`rescued`]).
+        // Last, from where a set the search dropped holds ([`from_held`]).
         if !proven {
-            if let Some((mut again, at)) = rescued(sys, group, dragged, cfg, cache)? {
+            let found = match rescued(sys, group, dragged, cfg, cache)? {
+                Some(found) => Some(found),
+                None => from_held(sys, group, dragged, cfg, cache, &held)?,
+            };
+            if let Some((mut again, at)) = found {
                 again.iterations += report.iterations;
                 (report, values) = (again, at);
             }
@@ -417,6 +435,48 @@ fn solve_cached(
     }
     Ok(report)
 }
+
+/// The solve of `group` from the first of `held` it succeeds from, if any: values where a set
+/// of its constraints holds alone, found from a start drawn at random after Newton from the
+/// drawing folded the sketch on its way (a horizontal line and an angle of 51 degrees from it,
+/// seed 430,180 of the random sketches: every start near the drawing runs the short line
+/// through zero length; see [`holds_scattered`]). A solution far from the drawing is still one
+/// where every constraint holds, where the alternative is none.
+fn from_held(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    cache: &mut Cache,
+    held: &[Vec<f64>],
+) -> Result<Option<(Report, Vec<f64>)>, SolveError> {
+    for start in held.iter().take(MAX_HELD_STARTS) {
+        let (report, values) = solve_values(sys, group, dragged, cfg, cache, Some(start))?;
+        if report.outcome.is_ok() {
+            return Ok(Some((report, values)));
+        }
+    }
+    Ok(None)
+}
+
+/// The values where `group` of `sys` (validated) holds, solved from the first of `held` it
+/// solves from ([`from_held`]), if any.
+pub(crate) fn solution_from(
+    sys: &System,
+    group: GroupId,
+    cfg: &Config,
+    held: &[Vec<f64>],
+) -> Option<Vec<f64>> {
+    let mut cache = Cache::default();
+    let found = from_held(sys, group, &[], cfg, &mut cache, held)
+        .ok()
+        .flatten();
+    cache.discard();
+    found.map(|(_, values)| values)
+}
+
+/// How many of the solutions of dropped sets [`from_held`] solves the whole from.
+const MAX_HELD_STARTS: usize = 4;
 
 /// [`solve_values`], and when it fails with carried entities read as expressions, the solve
 /// again with each of them its own unknowns and implicit equation (the cache of that solve
