@@ -126,7 +126,11 @@ fn diagnosed(
     // Nothing fails, and the whole solves from where a set dropped above holds: the solve
     // finds that solution too ([`crate::solve`]), and the diagnosis is of the sketch there.
     if elsewhere && !report.outcome.is_ok() && conflicting.is_empty() {
-        if let Some(at) = crate::solve::solution_from(sys, group, cfg, &found) {
+        let at = crate::solve::solution_from(sys, group, cfg, &found).or_else(|| {
+            let start = crate::solve::scattered_whole(sys, group, cfg)?;
+            crate::solve::solution_from(sys, group, cfg, &[start])
+        });
+        if let Some(at) = at {
             let mut solved = sys.clone();
             solved.write_group_values(group, &at);
             let mut there = diagnosed(&solved, group, cfg, false)?;
