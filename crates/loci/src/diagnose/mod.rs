@@ -95,18 +95,14 @@ fn diagnosed(
             Some(r) => circuits::circuits(&eqs, m, r, cfg),
             None => Vec::new(),
         });
-    // As the solve names them: none that holds alone when built up with SolveSpace's steps or
-    // from random starts, searched again from where a dropped set holds ([`name_conflicts`]).
-    let mut found: Vec<Vec<f64>> = Vec::new();
-    let mut round = 0;
-    let mut conflicting = loop {
-        let mut starts: Vec<&[f64]> = vec![&values, &start];
-        starts.extend(found.iter().map(Vec::as_slice));
+    // As the solve names them: none that holds alone by the solve's rescues or from random
+    // starts, searched again from where a dropped set holds ([`searched_again`]).
+    let (mut conflicting, found) = searched_again(&[&values, &start], |starts, solutions| {
         let (mut conflicting, _) = conflict_sets(
             &eqs,
             moved.as_ref().unwrap_or(&lin),
             moved_circuits.as_ref().unwrap_or(&circuits),
-            &starts,
+            starts,
             report.outcome,
             cfg,
             usize::MAX,
@@ -114,23 +110,13 @@ fn diagnosed(
         if ran_off(&eqs, &start, report.residual) {
             conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
         }
-        let mut solutions = Vec::new();
-        conflicting.retain(|s| !built_alone(sys, group, &s.members, cfg, &mut solutions));
-        round += 1;
-        if solutions.is_empty() || round > REGROWN {
-            found.extend(solutions);
-            break conflicting;
-        }
-        found.extend(solutions);
-    };
+        conflicting.retain(|s| !built_alone(sys, group, &s.members, cfg, solutions));
+        conflicting
+    });
     // Nothing fails, and the whole solves from where a set dropped above holds: the solve
     // finds that solution too ([`crate::solve`]), and the diagnosis is of the sketch there.
     if elsewhere && !report.outcome.is_ok() && conflicting.is_empty() {
-        let at = crate::solve::solution_from(sys, group, cfg, &found).or_else(|| {
-            let start = crate::solve::scattered_whole(sys, group, cfg)?;
-            crate::solve::solution_from(sys, group, cfg, &[start])
-        });
-        if let Some(at) = at {
+        if let Some(at) = crate::solve::solution_further_off(sys, group, cfg, &found) {
             let mut solved = sys.clone();
             solved.write_group_values(group, &at);
             let mut there = diagnosed(&solved, group, cfg, false)?;
@@ -329,24 +315,18 @@ pub(crate) fn name_conflicts(
     // the real conflict (seed 451,288 of the random sketches: an angle of 140 degrees from a
     // horizontal line to a vertical one, shrunk to the horizontal and the angle, which fold
     // near the drawing like the pair of `holds_scattered`, and then named nothing).
-    let mut found: Vec<Vec<f64>> = Vec::new();
-    let mut round = 0;
-    let (sets, searched, whole) = loop {
-        let mut starts: Vec<&[f64]> = vec![values, &start];
-        starts.extend(found.iter().map(Vec::as_slice));
+    let (searched_sets, found) = searched_again(&[values, &start], |starts, solutions| {
         let (mut sets, mut searched) = (Vec::new(), false);
         if !seed.is_empty() {
             let keep = focus::focus(sys, group, &seed, kernels, links);
             if let Ok(eqs) = Equations::only(sys, group, &start, &|o| keep.contains(&o)) {
-                (sets, searched) = sets_in(&eqs, &starts);
+                (sets, searched) = sets_in(&eqs, starts);
             }
         }
         let mut whole = None;
         if sets.is_empty() {
-            let Ok(all) = Equations::new(sys, group, &start) else {
-                return false;
-            };
-            (sets, searched) = sets_in(&all, &starts);
+            let all = Equations::new(sys, group, &start).ok()?;
+            (sets, searched) = sets_in(&all, starts);
             whole = Some(all);
         }
         // Only a large set can be dropped for a solve that ran off: the whole group's
@@ -363,12 +343,11 @@ pub(crate) fn name_conflicts(
             }
         }
         // Before a set is named, its constraints are kept alone in a system of their own and
-        // built up with SolveSpace's steps, the one way of looking for a solution that `solve`
-        // takes and the checks above do not; a set too large to shrink, only checked quickly
-        // so far, is also checked every way. A set that holds alone is no conflict, whatever
-        // the solve of the whole did: kept alone, 6 constraints of a fuzzed sketch solved that
-        // way, and 17 of another that only the quick check had looked at.
-        let mut solutions = Vec::new();
+        // solved by the ways of looking for a solution that `solve` takes and the checks above
+        // do not; a set too large to shrink, only checked quickly so far, is also checked
+        // every way. A set that holds alone is no conflict, whatever the solve of the whole
+        // did: kept alone, 6 constraints of a fuzzed sketch solved that way, and 17 of another
+        // that only the quick check had looked at.
         if !sets.is_empty() {
             let quick = |s: &ConflictSet| !s.verified && s.members.len() > minimal::LARGE_SET;
             if whole.is_none() && sets.iter().any(quick) {
@@ -376,21 +355,19 @@ pub(crate) fn name_conflicts(
             }
             // A set that holds either way is dropped.
             sets.retain(|s| {
-                let holds = built_alone(sys, group, &s.members, cfg, &mut solutions)
+                let holds = built_alone(sys, group, &s.members, cfg, solutions)
                     || (quick(s)
                         && whole
                             .as_ref()
-                            .is_some_and(|all| minimal::holds(all, &s.members, &starts, cfg)));
+                            .is_some_and(|all| minimal::holds(all, &s.members, starts, cfg)));
                 !holds
             });
         }
-        round += 1;
-        if solutions.is_empty() || round > REGROWN {
-            held.extend(found);
-            held.extend(solutions);
-            break (sets, searched, whole);
-        }
-        found.extend(solutions);
+        Some((sets, searched, whole))
+    });
+    held.extend(found);
+    let Some((sets, searched, whole)) = searched_sets else {
+        return false;
     };
     report.failed.clear();
     report.failed_entities.clear();
@@ -438,8 +415,8 @@ pub(crate) fn name_conflicts(
 }
 
 /// Whether the members of `set`, kept alone in a system of their own (with the entities and
-/// parameters they refer to), solve when built up one constraint at a time with SolveSpace's
-/// steps ([`crate::solve::builds_alone`]), or from starts drawn at random
+/// parameters they refer to), solve by one of the solve's rescues
+/// ([`crate::solve::rescued_alone`]), or from starts drawn at random
 /// ([`crate::solve::holds_scattered`]).
 ///
 /// Where only a random start solves it, the values there are pushed on `solutions`: every
@@ -454,7 +431,7 @@ fn built_alone(
     let Some(part) = kept_alone(sys, set.iter().copied()) else {
         return false;
     };
-    if crate::solve::builds_alone(&part, group, cfg) {
+    if crate::solve::rescued_alone(&part, group, cfg) {
         return true;
     }
     let Some(held) = crate::solve::holds_scattered(&part, group, cfg) else {
@@ -470,7 +447,31 @@ fn built_alone(
     true
 }
 
-/// How many times [`name_conflicts`] searches again from the solutions of sets it dropped.
+/// `search` from the starts `base`; then, while it leaves solutions on its second argument
+/// (of sets it dropped because they hold from a start drawn at random, see [`built_alone`]),
+/// again with those among its starts, at most [`REGROWN`] more times. Its last result, and
+/// every solution left.
+fn searched_again<T>(
+    base: &[&[f64]],
+    mut search: impl FnMut(&[&[f64]], &mut Vec<Vec<f64>>) -> T,
+) -> (T, Vec<Vec<f64>>) {
+    let mut found: Vec<Vec<f64>> = Vec::new();
+    let mut round = 0;
+    loop {
+        let mut starts = base.to_vec();
+        starts.extend(found.iter().map(Vec::as_slice));
+        let mut solutions = Vec::new();
+        let out = search(&starts, &mut solutions);
+        round += 1;
+        let last = solutions.is_empty() || round > REGROWN;
+        found.extend(solutions);
+        if last {
+            return (out, found);
+        }
+    }
+}
+
+/// How many times [`searched_again`] searches again from the solutions of sets dropped.
 const REGROWN: usize = 2;
 
 /// The members of a set kept alone in a system of their own, with the entities and

@@ -98,15 +98,11 @@ pub(crate) fn holds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     if sys.validate().is_err() || check_group(sys, group).is_err() {
         return false;
     }
-    solves_as_it_stands(sys, group, cfg)
-}
-
-/// [`holds_alone`] on a system already validated for `group`.
-fn solves_as_it_stands(sys: &System, group: GroupId, cfg: &Config) -> bool {
     solution_as_it_stands(sys, group, cfg).is_some()
 }
 
-/// The values of every parameter where [`solves_as_it_stands`] solves `group`, if it does.
+/// The values of every parameter where [`holds_alone`] solves `group` of `sys` (already
+/// validated for it), if it does.
 fn solution_as_it_stands(sys: &System, group: GroupId, cfg: &Config) -> Option<Vec<f64>> {
     let cfg = Config {
         name_conflicts: false,
@@ -125,7 +121,7 @@ fn solution_as_it_stands(sys: &System, group: GroupId, cfg: &Config) -> Option<V
 /// no set is named that [`solve`] solves alone. Built up with steps of least movement
 /// ([`built_least`]) only, a set of 30 constraints of a fuzzed sketch (searched again from
 /// where a smaller set held) was named that solved alone with some angles turned.
-pub(crate) fn builds_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
+pub(crate) fn rescued_alone(sys: &System, group: GroupId, cfg: &Config) -> bool {
     if sys.validate().is_err() || check_group(sys, group).is_err() {
         return false;
     }
@@ -415,18 +411,12 @@ fn solve_cached(
             }
         }
         // Nothing shown to fail on its own: Newton from the whole drawing may have folded the
-        // sketch on its way. Look for a solution another way ([`rescued`]).
-        // Last, from where a set the search dropped holds ([`from_held`]), or a small group
-        // that is not being dragged from starts drawn at random ([`scattered_whole`]).
+        // sketch on its way. Look for a solution another way ([`rescued`]), then from further
+        // off ([`found_further_off`]).
         if !proven {
             let mut found = rescued(sys, group, dragged, cfg, cache)?;
             if found.is_none() {
-                found = from_held(sys, group, dragged, cfg, cache, &held)?;
-            }
-            if found.is_none() && dragged.is_empty() {
-                if let Some(start) = scattered_whole(sys, group, cfg) {
-                    found = from_held(sys, group, dragged, cfg, cache, &[start])?;
-                }
+                found = found_further_off(sys, group, dragged, cfg, cache, &held)?;
             }
             if let Some((mut again, at)) = found {
                 again.iterations += report.iterations;
@@ -472,36 +462,51 @@ fn from_held(
     Ok(None)
 }
 
-/// The values where `group` of `sys` (validated) holds, solved from the first of `held` it
-/// solves from ([`from_held`]), if any.
-pub(crate) fn solution_from(
+/// The solve of `group` from further off than the drawing, when nothing else found one: from
+/// where a set the search for conflicts dropped holds ([`from_held`]); failing that, for a
+/// group that is not being dragged and has at most [`SCATTERED_WHOLE_UP_TO`] unknowns, from
+/// starts drawn at random ([`holds_scattered`]: eight solves, paid only by a group that
+/// fails every other way). Six constraints of a random sketch (seed 473,644 less its
+/// constraint 9: two vertical lines, a symmetry, two distances and an angle) stopped short
+/// from the drawing, naming nothing, and solve from a start moved a few percent.
+fn found_further_off(
+    sys: &System,
+    group: GroupId,
+    dragged: &[ParamId],
+    cfg: &Config,
+    cache: &mut Cache,
+    held: &[Vec<f64>],
+) -> Result<Option<(Report, Vec<f64>)>, SolveError> {
+    if let Some(found) = from_held(sys, group, dragged, cfg, cache, held)? {
+        return Ok(Some(found));
+    }
+    let unknowns = sys.params().iter().filter(|p| p.group == group).count();
+    if !dragged.is_empty() || unknowns > SCATTERED_WHOLE_UP_TO {
+        return Ok(None);
+    }
+    match holds_scattered(sys, group, cfg) {
+        Some(start) => from_held(sys, group, dragged, cfg, cache, &[start]),
+        None => Ok(None),
+    }
+}
+
+/// The values where `group` of `sys` (validated) holds, found further off than the drawing
+/// as the solve finds them ([`found_further_off`]), if they are.
+pub(crate) fn solution_further_off(
     sys: &System,
     group: GroupId,
     cfg: &Config,
     held: &[Vec<f64>],
 ) -> Option<Vec<f64>> {
     let mut cache = Cache::default();
-    let found = from_held(sys, group, &[], cfg, &mut cache, held)
+    let found = found_further_off(sys, group, &[], cfg, &mut cache, held)
         .ok()
         .flatten();
     cache.discard();
     found.map(|(_, values)| values)
 }
 
-/// The values where the whole of `group` holds from a start drawn at random
-/// ([`holds_scattered`]), if the group has at most [`SCATTERED_WHOLE_UP_TO`] unknowns: eight
-/// solves of a small group, paid only by one that fails every other way. Six constraints of a random sketch (seed 473,644 less its
-/// constraint 9: two vertical lines, a symmetry, two distances and an angle) stopped short
-/// from the drawing, naming nothing, and solve from a start moved a few percent.
-pub(crate) fn scattered_whole(sys: &System, group: GroupId, cfg: &Config) -> Option<Vec<f64>> {
-    let unknowns = sys.params().iter().filter(|p| p.group == group).count();
-    if unknowns > SCATTERED_WHOLE_UP_TO {
-        return None;
-    }
-    holds_scattered(sys, group, cfg)
-}
-
-/// The most unknowns of a group that [`scattered_whole`] solves from random starts.
+/// The most unknowns of a group that [`found_further_off`] solves from random starts.
 const SCATTERED_WHOLE_UP_TO: usize = 200;
 
 /// How many of the solutions of dropped sets [`from_held`] solves the whole from.
