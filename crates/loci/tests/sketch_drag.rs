@@ -239,6 +239,30 @@ fn a_quarter_turn_per_step_is_cut_into_pieces_rather_than_flip() {
     assert!(pieces >= 8);
 }
 
+/// A point held by two bare distances (no lines) from the ends of a line between fixed
+/// points has two places, mirror images across the line. Dragged away across the line, it
+/// must stay where it is: once the cursor was far enough past, the whole step solved at the
+/// mirror image, and only triangles of three lines were watched (seed 2 of the random drags).
+#[test]
+fn a_point_held_by_two_distances_is_not_flipped_across_their_anchors() {
+    let mut s = Sketch::new();
+    let a = s.add_point(0.0, 0.0).unwrap();
+    let c = s.add_point(3.0, 0.0).unwrap();
+    let b = s.add_point(1.5, 2.0).unwrap();
+    s.add_line(a, c).unwrap();
+    s.fix(a).unwrap();
+    s.fix(c).unwrap();
+    s.distance(a, b, 2.5).unwrap();
+    s.distance(b, c, 2.5).unwrap();
+    assert!(s.solve().unwrap().outcome.is_ok());
+    let mut drag = s.begin_drag(b).unwrap();
+    for k in 1..=12 {
+        let st = drag.step([1.5, 2.0 - 0.5 * k as f64]).unwrap();
+        let p = drag.sketch().point(b);
+        assert!(dist(p, [1.5, 2.0]) < 1e-6, "step {k}: {p:?}, {st:?}");
+    }
+}
+
 #[test]
 fn a_whole_circle_is_dragged_by_its_centre_and_keeps_its_radius() {
     let mut s = Sketch::new();

@@ -4,9 +4,9 @@
 //! A [`Drag`] writes the soft constraints once and keeps one [`Solver`]: consecutive steps
 //! change values only, so they reuse the compiled equations, ordering and factorisation,
 //! and components the drag does not touch are not solved. After each step the orientation
-//! of every triangle of lines, the direction of every arc and the side of every tangency
-//! (see [`super::sides`]) is compared with before; a step that would turn one over (or that
-//! fails) is undone and taken in shorter pieces.
+//! of every triangle of lines and point-to-point distances, the direction of every arc and
+//! the side of every tangency (see [`super::sides`]) is compared with before; a step that
+//! would turn one over (or that fails) is undone and taken in shorter pieces.
 
 use super::sides::Side;
 use super::soft::SoftRec;
@@ -194,7 +194,8 @@ impl Sketch {
         self.begin_drag(shape)?.step(target)
     }
 
-    /// Triangles of lines: three points (up to coincidence) joined pairwise by lines.
+    /// Triangles of lines and distances: three points (up to coincidence) joined pairwise by
+    /// lines or by distances between points.
     fn triangles(&self) -> Vec<[PointId; 3]> {
         // Classes of coincident points.
         let mut parent: BTreeMap<PointId, PointId> = BTreeMap::new();
@@ -225,6 +226,25 @@ impl Sketch {
             if k == ShapeKind::Line {
                 let [a, b] = self.line_points(super::LineId(s.0));
                 let (a, b) = (find(&mut parent, a), find(&mut parent, b));
+                if a != b {
+                    adj.entry(a).or_default().insert(b);
+                    adj.entry(b).or_default().insert(a);
+                }
+            }
+        }
+        // A distance between two points joins them as rigidly as a line with a length: three
+        // points with a distance on every side are a rigid triangle, which turns over only by
+        // a jump to its mirror image (a point held by two distances, dragged away, jumped
+        // across the line of its two anchors). Reference dimensions hold nothing.
+        for (id, spec) in self.constraints() {
+            if let Spec::Distance { a, b, .. } = spec {
+                if self.constraint(id).is_some_and(|(_, reference)| reference) {
+                    continue;
+                }
+                let (a, b) = (
+                    find(&mut parent, PointId(a.0)),
+                    find(&mut parent, PointId(b.0)),
+                );
                 if a != b {
                     adj.entry(a).or_default().insert(b);
                     adj.entry(b).or_default().insert(a);

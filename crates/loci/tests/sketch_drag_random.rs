@@ -1,0 +1,310 @@
+//! Random linkages dragged along random paths: after every step each constraint holds (checked
+//! here from the points, not from the solver's word), no rigid triangle turns over (three
+//! points with all three distances fixed keep their orientation: their area is fixed by the
+//! lengths, so a change of sign is a jump, never a motion), and no point jumps far while the
+//! cursor moves a little.
+//!
+//! The linkages: rigid triangles hinged at shared corners, bars between points, one or two
+//! fixed points, some bars drawn as lines (whose triangles the drag watches itself) and some
+//! as bare distances between points (which it does not). Their lengths are read from where the
+//! points are drawn, so every sketch holds at its start.
+//!
+//! `LOCI_RANDOM_DRAGS=N` drags N linkages (12 by default), from `LOCI_RANDOM_FIRST_DRAG`.
+
+use loci::sketch::{PointId, Sketch};
+
+/// A small deterministic generator (splitmix64).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * ((self.next() >> 11) as f64 / (1u64 << 53) as f64)
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+}
+
+/// How far a constraint may miss once a step has been taken.
+const HOLDS: f64 = 1e-6;
+
+/// A linkage: its points, its bars (`(a, b, length)`) and its fixed points.
+struct Linkage {
+    sketch: Sketch,
+    points: Vec<PointId>,
+    start: Vec<[f64; 2]>,
+    bars: Vec<(usize, usize, f64)>,
+    /// Whether each bar is drawn as a line (else a distance between bare points).
+    lines: Vec<bool>,
+    fixed: Vec<usize>,
+    /// The size of the drawing, for the steps of the path and the jumps.
+    size: f64,
+}
+
+fn dist(a: [f64; 2], b: [f64; 2]) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+fn area(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+}
+
+/// A chain of rigid triangles from a fixed corner, each hinged to the one before at a corner,
+/// with extra bars closing loops (some to a second fixed point), as long as some freedom is
+/// left.
+fn linkage(seed: u64) -> Linkage {
+    let mut rng = Rng(seed ^ 0xD4A6_0000);
+    let size = 10.0;
+    let mut pts: Vec<[f64; 2]> = vec![[0.0, 0.0]];
+    let mut bars: Vec<(usize, usize)> = Vec::new();
+    let triangles = 1 + rng.below(4);
+    let mut hinge = 0;
+    for _ in 0..triangles {
+        // Two new corners near the hinge, the triangle not too thin.
+        let h = pts[hinge];
+        let (b, c) = loop {
+            let b = [h[0] + rng.uniform(-3.0, 3.0), h[1] + rng.uniform(-3.0, 3.0)];
+            let c = [h[0] + rng.uniform(-3.0, 3.0), h[1] + rng.uniform(-3.0, 3.0)];
+            let s = dist(h, b).max(dist(h, c)).max(dist(b, c));
+            if area(h, b, c).abs() > 0.15 * s * s && dist(h, b) > 0.5 && dist(h, c) > 0.5 {
+                break (b, c);
+            }
+        };
+        let (ib, ic) = (pts.len(), pts.len() + 1);
+        pts.push(b);
+        pts.push(c);
+        bars.extend([(hinge, ib), (hinge, ic), (ib, ic)]);
+        hinge = if rng.below(2) == 0 { ib } else { ic };
+    }
+    let mut fixed = vec![0];
+    // Loops closed: a bar from a corner to a new fixed point, or between two corners of
+    // different triangles, while at least one freedom is left.
+    let freedoms = |pts: &[[f64; 2]], bars: &[(usize, usize)], fixed: &[usize]| {
+        2 * pts.len() as i64 - bars.len() as i64 - 2 * fixed.len() as i64
+    };
+    for _ in 0..rng.below(3) {
+        if rng.below(2) == 0 {
+            let corner = 1 + rng.below(pts.len() - 1);
+            let c = pts[corner];
+            let g = [c[0] + rng.uniform(-3.0, 3.0), c[1] + rng.uniform(-3.0, 3.0)];
+            let ig = pts.len();
+            pts.push(g);
+            if freedoms(
+                &pts,
+                &[bars.clone(), vec![(corner, ig)]].concat(),
+                &[fixed.clone(), vec![ig]].concat(),
+            ) < 1
+            {
+                pts.pop();
+                continue;
+            }
+            bars.push((corner, ig));
+            fixed.push(ig);
+        } else {
+            let a = rng.below(pts.len());
+            let b = rng.below(pts.len());
+            if a == b
+                || bars
+                    .iter()
+                    .any(|&(p, q)| (p, q) == (a, b) || (p, q) == (b, a))
+            {
+                continue;
+            }
+            if freedoms(&pts, &[bars.clone(), vec![(a, b)]].concat(), &fixed) < 1 {
+                continue;
+            }
+            bars.push((a, b));
+        }
+    }
+    let mut sketch = Sketch::new();
+    let points: Vec<PointId> = pts
+        .iter()
+        .map(|p| sketch.add_point(p[0], p[1]).unwrap())
+        .collect();
+    let mut with_len = Vec::new();
+    let mut lines = Vec::new();
+    for &(a, b) in &bars {
+        let len = dist(pts[a], pts[b]);
+        lines.push(rng.below(2) == 0);
+        if *lines.last().unwrap() {
+            let l = sketch.add_line(points[a], points[b]).unwrap();
+            sketch.length(l, len).unwrap();
+        } else {
+            sketch.distance(points[a], points[b], len).unwrap();
+        }
+        with_len.push((a, b, len));
+    }
+    for &f in &fixed {
+        sketch.fix(points[f]).unwrap();
+    }
+    Linkage {
+        sketch,
+        points,
+        start: pts,
+        bars: with_len,
+        lines,
+        fixed,
+        size,
+    }
+}
+
+/// The rigid triangles: triples of points with a bar on every side.
+fn rigid_triangles(l: &Linkage) -> Vec<[usize; 3]> {
+    let n = l.points.len();
+    let has = |a: usize, b: usize| {
+        l.bars
+            .iter()
+            .any(|&(p, q, _)| (p, q) == (a, b) || (p, q) == (b, a))
+    };
+    let mut out = Vec::new();
+    for a in 0..n {
+        for b in a + 1..n {
+            for c in b + 1..n {
+                if has(a, b) && has(b, c) && has(a, c) {
+                    out.push([a, b, c]);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// What went wrong with one linkage's drag, if anything.
+fn drag_one(seed: u64) -> Result<(usize, f64), String> {
+    let mut l = linkage(seed);
+    let mut rng = Rng(seed ^ 0x0D2A_6000);
+    let free: Vec<usize> = (0..l.points.len())
+        .filter(|i| !l.fixed.contains(i))
+        .collect();
+    let grip = free[rng.below(free.len())];
+    let triangles = rigid_triangles(&l);
+    if std::env::var("LOCI_RANDOM_DRAG_VERBOSE").is_ok() {
+        eprintln!(
+            "seed {seed}: points {:?}, bars {:?} (lines {:?}), fixed {:?}, grip {grip}",
+            l.start, l.bars, l.lines, l.fixed
+        );
+    }
+    let signs: Vec<f64> = triangles
+        .iter()
+        .map(|t| area(l.start[t[0]], l.start[t[1]], l.start[t[2]]).signum())
+        .collect();
+    let bars = l.bars.clone();
+    let fixed: Vec<(usize, [f64; 2])> = l.fixed.iter().map(|&f| (f, l.start[f])).collect();
+    let points = l.points.clone();
+    let size = l.size;
+    let read = |s: &Sketch| -> Vec<[f64; 2]> { points.iter().map(|&p| s.point(p)).collect() };
+    let mut drag = l
+        .sketch
+        .begin_drag(points[grip])
+        .map_err(|e| format!("begin_drag: {e}"))?;
+    let mut at = read(drag.sketch());
+    let mut target = at[grip];
+    let mut heading = rng.uniform(0.0, std::f64::consts::TAU);
+    let mut worst_jump = 0.0f64;
+    // Whether the grip reached the cursor at the last step.
+    let mut followed = true;
+    let steps = 150;
+    for k in 0..steps {
+        // A smooth wandering path, with now and then a long jump of the cursor.
+        heading += rng.uniform(-0.4, 0.4);
+        // Back towards the drawing when the cursor has wandered off.
+        if target[0].hypot(target[1]) > 0.6 * size {
+            heading = (-target[1]).atan2(-target[0]) + rng.uniform(-0.5, 0.5);
+        }
+        let h = if k % 50 == 49 {
+            0.3 * size
+        } else {
+            0.02 * size
+        };
+        let prev_target = target;
+        target = [target[0] + h * heading.cos(), target[1] + h * heading.sin()];
+        let st = drag.step(target).map_err(|e| format!("step {k}: {e}"))?;
+        let now = read(drag.sketch());
+        if std::env::var("LOCI_RANDOM_DRAG_VERBOSE").is_ok() {
+            eprintln!("step {k}: target {target:?} {st:?}\n  points {now:?}");
+        }
+        // The constraints hold wherever the drag left the sketch, whatever it said.
+        for &(a, b, len) in &bars {
+            let miss = (dist(now[a], now[b]) - len).abs();
+            if miss > HOLDS * len.max(1.0) {
+                return Err(format!(
+                    "step {k} ({st:?}): the bar {a}-{b} of length {len} reads {}",
+                    dist(now[a], now[b])
+                ));
+            }
+        }
+        for &(f, p) in &fixed {
+            if dist(now[f], p) > HOLDS {
+                return Err(format!(
+                    "step {k}: the fixed point {f} moved to {:?}",
+                    now[f]
+                ));
+            }
+        }
+        for (t, &sign) in triangles.iter().zip(&signs) {
+            let s = area(now[t[0]], now[t[1]], now[t[2]]).signum();
+            if s != sign {
+                return Err(format!(
+                    "step {k} ({st:?}): the rigid triangle {t:?} turned over"
+                ));
+            }
+        }
+        // How far the points moved against how far the cursor did, while the grip follows
+        // the cursor. Where it cannot (a cursor beyond reach), the grip goes to the nearest
+        // place it can reach, which can swing a whole arm round as the cursor passes near
+        // the centre of its reach: no branch is changed there, so only the triangles count.
+        let follows = st.reached && st.miss <= HOLDS * size;
+        if follows && followed {
+            let moved = at
+                .iter()
+                .zip(&now)
+                .map(|(a, b)| dist(*a, *b))
+                .fold(0.0f64, f64::max);
+            let cursor = dist(prev_target, target);
+            worst_jump = worst_jump.max(moved / cursor);
+            if moved > 0.25 * size && moved > 5.0 * cursor {
+                return Err(format!(
+                    "step {k} ({st:?}): a point jumped {moved} while the cursor moved {cursor}"
+                ));
+            }
+        }
+        followed = follows;
+        at = now;
+    }
+    Ok((triangles.len(), worst_jump))
+}
+
+#[test]
+fn random_linkages_dragged_along_random_paths_hold_and_never_flip() {
+    let n: u64 = std::env::var("LOCI_RANDOM_DRAGS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(12);
+    let first: u64 = std::env::var("LOCI_RANDOM_FIRST_DRAG")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0);
+    let mut failures = Vec::new();
+    let (mut triangles, mut worst) = (0, 0.0f64);
+    for seed in first..first + n {
+        match drag_one(seed) {
+            Ok((t, w)) => {
+                triangles += t;
+                worst = worst.max(w);
+            }
+            Err(e) => failures.push(format!("seed {seed}: {e}")),
+        }
+    }
+    eprintln!(
+        "{n} linkages dragged, {triangles} rigid triangles watched, largest move per cursor move {worst:.1}; {} failed",
+        failures.len()
+    );
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
