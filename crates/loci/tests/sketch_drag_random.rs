@@ -177,7 +177,17 @@ fn rigid_triangles(l: &Linkage) -> Vec<[usize; 3]> {
 }
 
 /// What went wrong with one linkage's drag, if anything.
-fn drag_one(seed: u64) -> Result<(usize, f64), String> {
+/// What one linkage's drag showed: rigid triangles watched, the largest move of a point per
+/// move of the cursor while the grip followed it, steps where it did, and the time the steps
+/// took.
+struct Dragged {
+    triangles: usize,
+    worst_jump: f64,
+    followed: usize,
+    took: f64,
+}
+
+fn drag_one(seed: u64) -> Result<Dragged, String> {
     let mut l = linkage(seed);
     let mut rng = Rng(seed ^ 0x0D2A_6000);
     let free: Vec<usize> = (0..l.points.len())
@@ -210,6 +220,7 @@ fn drag_one(seed: u64) -> Result<(usize, f64), String> {
     let mut worst_jump = 0.0f64;
     // Whether the grip reached the cursor at the last step.
     let mut followed = true;
+    let (mut steps_followed, mut took_all) = (0, 0.0);
     let steps = 150;
     for k in 0..steps {
         // A smooth wandering path, with now and then a long jump of the cursor.
@@ -225,10 +236,13 @@ fn drag_one(seed: u64) -> Result<(usize, f64), String> {
         };
         let prev_target = target;
         target = [target[0] + h * heading.cos(), target[1] + h * heading.sin()];
+        let clock = std::time::Instant::now();
         let st = drag.step(target).map_err(|e| format!("step {k}: {e}"))?;
+        let took = clock.elapsed().as_secs_f64() * 1e3;
+        took_all += took;
         let now = read(drag.sketch());
         if std::env::var("LOCI_RANDOM_DRAG_VERBOSE").is_ok() {
-            eprintln!("step {k}: target {target:?} {st:?}\n  points {now:?}");
+            eprintln!("step {k}: {took:.3} ms, target {target:?} {st:?}\n  points {now:?}");
         }
         // The constraints hold wherever the drag left the sketch, whatever it said.
         for &(a, b, len) in &bars {
@@ -276,9 +290,15 @@ fn drag_one(seed: u64) -> Result<(usize, f64), String> {
             }
         }
         followed = follows;
+        steps_followed += usize::from(follows);
         at = now;
     }
-    Ok((triangles.len(), worst_jump))
+    Ok(Dragged {
+        triangles: triangles.len(),
+        worst_jump,
+        followed: steps_followed,
+        took: took_all,
+    })
 }
 
 #[test]
@@ -292,18 +312,22 @@ fn random_linkages_dragged_along_random_paths_hold_and_never_flip() {
         .and_then(|v| v.parse().ok())
         .unwrap_or(0);
     let mut failures = Vec::new();
-    let (mut triangles, mut worst) = (0, 0.0f64);
+    let (mut triangles, mut worst, mut followed, mut took) = (0, 0.0f64, 0, 0.0);
     for seed in first..first + n {
         match drag_one(seed) {
-            Ok((t, w)) => {
-                triangles += t;
-                worst = worst.max(w);
+            Ok(d) => {
+                triangles += d.triangles;
+                worst = worst.max(d.worst_jump);
+                followed += d.followed;
+                took += d.took;
             }
             Err(e) => failures.push(format!("seed {seed}: {e}")),
         }
     }
     eprintln!(
-        "{n} linkages dragged, {triangles} rigid triangles watched, largest move per cursor move {worst:.1}; {} failed",
+        "{n} linkages dragged, {triangles} rigid triangles watched, the grip on the cursor at \
+         {followed} steps, largest move per cursor move there {worst:.1}, steps {took:.0} ms \
+         in all; {} failed",
         failures.len()
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));

@@ -151,6 +151,17 @@ impl Config {
         self
     }
 
+    /// Sets whether a failed solve is checked further: its verdict confirmed, the sets of
+    /// constraints that cannot hold named, and a solution looked for another way (built up
+    /// one constraint at a time, with angles turned, from further off). On by default. Off
+    /// for a caller that answers a failure itself, as a drag does by taking a shorter step:
+    /// the checks cost many solves, and a solution found far off is a jump there.
+    #[must_use]
+    pub fn with_failure_checks(mut self, v: bool) -> Self {
+        self.name_conflicts = v;
+        self
+    }
+
     /// Sets [`Config::verify_conflicts_up_to`].
     #[must_use]
     pub fn with_verify_conflicts_up_to(mut self, v: usize) -> Self {
