@@ -81,13 +81,17 @@ impl Bars {
         out
     }
 
-    /// Hinges `[a, b, c]`: bars from `b` to `a` and to `c`, each pair once.
+    /// Hinges `[a, b, c]`: bars from `b` to `a` and to `c`, each pair once, but for those
+    /// whose ends are joined by a bar too: the triangle they make is watched already, and it
+    /// bends as it turns.
     pub fn hinges(&self) -> Vec<[PointId; 3]> {
         let mut out = Vec::new();
         for (b, nb) in &self.0 {
             for a in nb {
                 for c in nb.range(*a..).filter(|c| *c != a) {
-                    out.push([*a, *b, *c]);
+                    if !self.0[a].contains(c) {
+                        out.push([*a, *b, *c]);
+                    }
                 }
             }
         }

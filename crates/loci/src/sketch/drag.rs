@@ -377,9 +377,10 @@ impl Drag<'_> {
             .iter()
             .map(|h| {
                 let [a, b, c] = h.map(xy);
-                let arms = (a[0] - b[0]).hypot(a[1] - b[1]) * (c[0] - b[0]).hypot(c[1] - b[1]);
+                let (u, w) = ([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]]);
+                let arms = ((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1])).sqrt();
                 if arms > 0.0 {
-                    area([b, a, c]) / arms
+                    (u[0] * w[1] - u[1] * w[0]) / arms
                 } else {
                     0.0
                 }
