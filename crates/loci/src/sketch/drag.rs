@@ -4,16 +4,15 @@
 //! A [`Drag`] writes the soft constraints once and keeps one [`Solver`]: consecutive steps
 //! change values only, so they reuse the compiled equations, ordering and factorisation,
 //! and components the drag does not touch are not solved. After each step the orientation
-//! of every triangle of lines and point-to-point distances, the bend of every hinge of two
-//! of them (see [`super::bars`]), the direction of every arc and the side of every tangency
-//! (see [`super::sides`]) is compared with before; a step that would turn one over (or that
-//! fails) is undone and taken in shorter pieces.
+//! of every triangle of lines and point-to-point distances, the direction of every arc and
+//! the side of every tangency (see [`super::sides`]) is compared with before; a step that
+//! would turn one over (or that fails) is undone and taken in shorter pieces.
 
-use super::bars::Bars;
 use super::sides::Side;
 use super::soft::SoftRec;
-use super::{ArcId, PointId, ShapeId, ShapeKind, Sketch, SketchError};
+use super::{ArcId, PointId, ShapeId, ShapeKind, Sketch, SketchError, Spec};
 use crate::solve::{Outcome, Solver};
+use std::collections::{BTreeMap, BTreeSet};
 
 /// The shortest piece of a step tried, as a fraction of it, before giving up.
 const SHORTEST_PIECE: f64 = 1.0 / 64.0;
@@ -23,24 +22,8 @@ const SHORTEST_PIECE: f64 = 1.0 / 64.0;
 /// to 64; shorter pieces take fewer.
 const PIECE_ITERATIONS: usize = 50;
 
-/// A hinge may bend the other way in one piece of a step only while it is this close to
-/// straight (the change of the sine of its angle): passing through straight, it does so in
-/// short pieces; further, it jumped to the linkage's other branch. Dragged by 3 in one step, a
-/// two-link arm of 2.6 and 2.6 reached the cursor with its elbow the other way round (sines
-/// 0.999 and -0.987) where the straight path there stays within reach (random drags, seed
-/// 603). A free polyline's corner dragged across the line of its neighbours passes in pieces.
-const BENT: f64 = 0.1;
-
 /// The relative step size of the dragged parameters (see [`crate::Config::dragged_scale`]).
 const DRAGGED_SCALE: f64 = 1e-4;
-
-/// What a drag keeps of the sketch's shape to compare after a piece of a step: signed areas
-/// of triangles and sides of tangencies (`turns`), sines of hinges' bends, arcs' sweeps.
-struct Senses {
-    turns: Vec<f64>,
-    bends: Vec<f64>,
-    sweeps: Vec<f64>,
-}
 
 /// What one drag step did.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,8 +37,7 @@ pub struct DragStep {
     pub pieces: usize,
     /// Pieces undone because they failed or would have flipped something.
     pub refused: usize,
-    /// Pieces undone because they would have flipped a triangle, a hinge's bend, an arc or a
-    /// tangent side.
+    /// Pieces undone because they would have flipped a triangle, an arc or a tangent side.
     pub flips_prevented: usize,
     /// Where the dragged shape's grip ended.
     pub at: [f64; 2],
@@ -77,9 +59,6 @@ pub struct Drag<'a> {
     grip_ix: Vec<[usize; 2]>,
     /// Positions of the coordinates of each triangle's corners.
     triangles: Vec<[[usize; 2]; 3]>,
-    /// Positions of the coordinates of each hinge's points, `[a, b, c]` with bars `b`–`a`
-    /// and `b`–`c`.
-    hinges: Vec<[[usize; 2]; 3]>,
     /// Positions of the coordinates of each arc's centre, start and end.
     arcs: Vec<[[usize; 2]; 3]>,
     /// Tangencies whose side (of a line, or outside/inside another round) is kept.
@@ -179,9 +158,7 @@ impl Sketch {
             .with_dragged_scale(scale);
         self.restore_fixed();
         let ix = |p: PointId| self.point_indexes(p);
-        let bars = Bars::of(self);
-        let triangles = bars.triangles().into_iter().map(|t| t.map(ix)).collect();
-        let hinges = bars.hinges().into_iter().map(|t| t.map(ix)).collect();
+        let triangles = self.triangles().into_iter().map(|t| t.map(ix)).collect();
         let arcs = self
             .shapes()
             .filter(|(_, k)| *k == ShapeKind::Arc)
@@ -209,7 +186,6 @@ impl Sketch {
             solver: Solver::new(Self::SHAPE_GROUP, &params, cfg),
             grip_ix,
             triangles,
-            hinges,
             arcs,
             sides,
             fixed,
@@ -227,6 +203,76 @@ impl Sketch {
         target: [f64; 2],
     ) -> Result<DragStep, SketchError> {
         self.begin_drag(shape)?.step(target)
+    }
+
+    /// Triangles of lines and distances: three points (up to coincidence) joined pairwise by
+    /// lines or by distances between points.
+    fn triangles(&self) -> Vec<[PointId; 3]> {
+        // Classes of coincident points.
+        let mut parent: BTreeMap<PointId, PointId> = BTreeMap::new();
+        fn find(parent: &mut BTreeMap<PointId, PointId>, p: PointId) -> PointId {
+            let mut r = p;
+            while let Some(&q) = parent.get(&r) {
+                if q == r {
+                    break;
+                }
+                r = q;
+            }
+            parent.insert(p, r);
+            r
+        }
+        for (_, spec) in self.constraints() {
+            if let Spec::Coincident { a, b } = spec {
+                let (ra, rb) = (
+                    find(&mut parent, PointId(a.0)),
+                    find(&mut parent, PointId(b.0)),
+                );
+                if ra != rb {
+                    parent.insert(ra.max(rb), ra.min(rb));
+                }
+            }
+        }
+        let mut adj: BTreeMap<PointId, BTreeSet<PointId>> = BTreeMap::new();
+        for (s, k) in self.shapes() {
+            if k == ShapeKind::Line {
+                let [a, b] = self.line_points(super::LineId(s.0));
+                let (a, b) = (find(&mut parent, a), find(&mut parent, b));
+                if a != b {
+                    adj.entry(a).or_default().insert(b);
+                    adj.entry(b).or_default().insert(a);
+                }
+            }
+        }
+        // A distance between two points joins them as rigidly as a line with a length: three
+        // points with a distance on every side are a rigid triangle, which turns over only by
+        // a jump to its mirror image (a point held by two distances, dragged away, jumped
+        // across the line of its two anchors). Reference dimensions hold nothing.
+        for (id, spec) in self.constraints() {
+            if let Spec::Distance { a, b, .. } = spec {
+                if self.constraint(id).is_some_and(|(_, reference)| reference) {
+                    continue;
+                }
+                let (a, b) = (
+                    find(&mut parent, PointId(a.0)),
+                    find(&mut parent, PointId(b.0)),
+                );
+                if a != b {
+                    adj.entry(a).or_default().insert(b);
+                    adj.entry(b).or_default().insert(a);
+                }
+            }
+        }
+        let mut out = Vec::new();
+        for (u, nu) in &adj {
+            for v in nu.range(*u..).filter(|v| *v != u) {
+                for w in adj[v].range(*v..).filter(|w| *w != v) {
+                    if nu.contains(w) {
+                        out.push([*u, *v, *w]);
+                    }
+                }
+            }
+        }
+        out
     }
 }
 
@@ -361,32 +407,18 @@ impl Drag<'_> {
         Ok((report.outcome, flipped))
     }
 
-    /// Signed areas of the triangles and signed sides of the tangencies, sines of the hinges'
-    /// bends, and sweeps of the arcs.
-    fn orientation(&self) -> Senses {
+    /// Signed areas of the triangles and signed sides of the tangencies (each must keep its
+    /// sign), and sweeps of the arcs.
+    fn orientation(&self) -> (Vec<f64>, Vec<f64>) {
         let v = self.sketch.sys.params();
         let xy = |[i, j]: [usize; 2]| [v[i].val, v[j].val];
-        let turns = self
+        let tri = self
             .triangles
             .iter()
             .map(|t| area(t.map(xy)))
             .chain(self.sides.iter().map(|s| s.measure(v)))
             .collect();
-        let bends = self
-            .hinges
-            .iter()
-            .map(|h| {
-                let [a, b, c] = h.map(xy);
-                let (u, w) = ([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]]);
-                let arms = ((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1])).sqrt();
-                if arms > 0.0 {
-                    (u[0] * w[1] - u[1] * w[0]) / arms
-                } else {
-                    0.0
-                }
-            })
-            .collect();
-        let sweeps = self
+        let arcs = self
             .arcs
             .iter()
             .map(|a| {
@@ -396,32 +428,23 @@ impl Drag<'_> {
                 (end - start).to_degrees().rem_euclid(360.0)
             })
             .collect();
-        Senses {
-            turns,
-            bends,
-            sweeps,
-        }
+        (tri, arcs)
     }
 
-    /// Whether a triangle turned over, a tangency changed sides, a hinge bent the other way
-    /// without passing through straight, or an arc's sweep jumped across a full turn.
-    fn flipped(&self, before: &Senses) -> bool {
+    /// Whether a triangle turned over, a tangency changed sides or an arc's sweep jumped
+    /// across a full turn.
+    fn flipped(&self, before: &(Vec<f64>, Vec<f64>)) -> bool {
         let now = self.orientation();
-        let turned = before.turns.iter().zip(&now.turns).any(|(a, b)| {
+        let tri = before.0.iter().zip(&now.0).any(|(a, b)| {
             let scale = a.abs().max(b.abs());
             scale > 0.0 && a * b < 0.0 && a.abs() > 1e-9 * scale.max(1.0)
         });
-        let bent = before
-            .bends
+        let arcs = before
+            .1
             .iter()
-            .zip(&now.bends)
-            .any(|(a, b)| a * b < 0.0 && (a - b).abs() > BENT);
-        let swept = before
-            .sweeps
-            .iter()
-            .zip(&now.sweeps)
+            .zip(&now.1)
             .any(|(a, b)| (a - b).abs() > 180.0);
-        turned || bent || swept
+        tri || arcs
     }
 
     /// Ends the drag, taking its soft constraints out (as dropping it does).

@@ -25,7 +25,6 @@
 //! # Ok::<(), loci::sketch::SketchError>(())
 //! ```
 
-mod bars;
 mod calls;
 mod constraints;
 mod drag;

@@ -975,7 +975,10 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool) -> Vec<String> {
                 }
             }
         }
-        Outcome::DidNotConverge => seen.longer_failed += 1,
+        Outcome::DidNotConverge => {
+            seen.longer_failed += 1;
+            eprintln!("seed {seed}: lengthened, given up on (did_not_converge)");
+        }
     }
     wrong
 }
