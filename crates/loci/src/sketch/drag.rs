@@ -387,16 +387,7 @@ impl Drag<'_> {
             }
         }
         self.sketch.write_soft(&self.soft, &soft_values);
-        let t0 = std::time::Instant::now();
         let report = self.solver.solve(&mut self.sketch.sys)?;
-        if std::env::var("DBG_DRAG").is_ok() {
-            eprintln!(
-                "  attempt {:?} {} it {:.3} ms",
-                report.outcome,
-                report.iterations,
-                t0.elapsed().as_secs_f64() * 1e3
-            );
-        }
         self.compiled = Some(self.sketch.sys.revision());
         let flipped = report.outcome.is_ok() && self.flipped(&before);
         if !report.outcome.is_ok() || flipped {
