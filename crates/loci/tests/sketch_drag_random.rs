@@ -132,8 +132,9 @@ fn linkage(seed: u64) -> Linkage {
     let mut lines = Vec::new();
     for &(a, b) in &bars {
         let len = dist(pts[a], pts[b]);
-        lines.push(rng.below(2) == 0);
-        if *lines.last().unwrap() {
+        let as_line = rng.below(2) == 0;
+        lines.push(as_line);
+        if as_line {
             let l = sketch.add_line(points[a], points[b]).unwrap();
             sketch.length(l, len).unwrap();
         } else {
