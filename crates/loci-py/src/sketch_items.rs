@@ -270,7 +270,8 @@ impl DragResult {
     fn refused(&self) -> usize {
         self.s.refused
     }
-    /// Pieces undone because they would have flipped a triangle, an arc or a tangent side.
+    /// Pieces undone because they would have flipped a triangle, a hinge's bend, an arc or a
+    /// tangent side.
     #[getter]
     fn flips_prevented(&self) -> usize {
         self.s.flips_prevented

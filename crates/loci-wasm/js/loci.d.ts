@@ -307,7 +307,7 @@ export interface DragStep {
   reached: boolean;
   pieces: number;
   refused: number;
-  /** Pieces undone because they would have turned a triangle, an arc or a tangency over. */
+  /** Pieces undone because they would have turned a triangle, a hinge's bend, an arc or a tangency over. */
   flips_prevented: number;
   /** Where the dragged shape's grip ended. */
   at: [number, number];

@@ -263,6 +263,67 @@ fn a_point_held_by_two_distances_is_not_flipped_across_their_anchors() {
     }
 }
 
+/// A two-link arm dragged by its end far in one step, to a place the straight path reaches
+/// without leaving the arm's reach: its elbow must stay bent the way it was. In one solve it
+/// reached the cursor with the elbow the other way round (random drags, seed 603).
+/// A crank's pin dragged straight across its pivot swings round to the other side as the
+/// cursor passes the pivot: the coupler's hinge bends the other way however short the piece of
+/// the step, so the drag lets it there (and only there), and the crank reaches the far side.
+#[test]
+fn a_crank_dragged_across_its_pivot_swings_round_to_the_far_side() {
+    let mut f = four_bar();
+    let sign = orientation(&f.s, &f).signum();
+    let (b, c) = (f.b, f.c);
+    let steps = 20;
+    let mut drag = f.s.begin_drag(b).unwrap();
+    for k in 1..=steps {
+        let target = [1.0 - 2.0 * f64::from(k) / f64::from(steps), 0.0];
+        let st = drag.step(target).unwrap();
+        assert!(st.reached && st.outcome.is_ok(), "step {k}: {st:?}");
+        let sk = drag.sketch();
+        assert!(
+            (dist(sk.point(b), [0.0, 0.0]) - 1.0).abs() < 1e-7,
+            "step {k}"
+        );
+        assert!(
+            (dist(sk.point(c), [4.0, 0.0]) - 3.0).abs() < 1e-7,
+            "step {k}"
+        );
+        let tri = FourBar {
+            s: Sketch::new(),
+            b,
+            c,
+            e: f.e,
+        };
+        assert_eq!(orientation(sk, &tri).signum(), sign, "step {k}");
+    }
+    assert!(dist(drag.sketch().point(b), [-1.0, 0.0]) < 1e-6);
+}
+
+#[test]
+fn a_two_link_arm_dragged_far_in_one_step_keeps_its_elbow() {
+    let mut s = Sketch::new();
+    let a = s.add_point(0.0, 0.0).unwrap();
+    let b = s.add_point(-2.328_134_5, 1.139_978_5).unwrap();
+    let c = s.add_point(-3.411_900_1, -1.272_603_6).unwrap();
+    let upper = s.add_line(a, b).unwrap();
+    let lower = s.add_line(b, c).unwrap();
+    s.fix(a).unwrap();
+    s.length(upper, 2.592_250_2).unwrap();
+    s.length(lower, 2.644_825_2).unwrap();
+    assert!(s.solve().unwrap().outcome.is_ok());
+    let elbow = |sk: &Sketch| {
+        let (pa, pb, pc) = (sk.point(a), sk.point(b), sk.point(c));
+        (pb[0] - pa[0]) * (pc[1] - pb[1]) - (pb[1] - pa[1]) * (pc[0] - pb[0])
+    };
+    let sense = elbow(&s).signum();
+    let mut drag = s.begin_drag(c).unwrap();
+    let target = [-2.940_903, 1.690_193];
+    let st = drag.step(target).unwrap();
+    assert!(st.reached && st.miss < 1e-6, "{st:?}");
+    assert_eq!(elbow(drag.sketch()).signum(), sense, "{st:?}");
+}
+
 #[test]
 fn a_whole_circle_is_dragged_by_its_centre_and_keeps_its_radius() {
     let mut s = Sketch::new();

@@ -4,15 +4,16 @@
 //! A [`Drag`] writes the soft constraints once and keeps one [`Solver`]: consecutive steps
 //! change values only, so they reuse the compiled equations, ordering and factorisation,
 //! and components the drag does not touch are not solved. After each step the orientation
-//! of every triangle of lines and point-to-point distances, the direction of every arc and
-//! the side of every tangency (see [`super::sides`]) is compared with before; a step that
-//! would turn one over (or that fails) is undone and taken in shorter pieces.
+//! of every triangle of lines and point-to-point distances, the bend of every hinge of two
+//! of them (see [`super::bars`]), the direction of every arc and the side of every tangency
+//! (see [`super::sides`]) is compared with before; a step that would turn one over (or that
+//! fails) is undone and taken in shorter pieces.
 
+use super::bars::Bars;
 use super::sides::Side;
 use super::soft::SoftRec;
-use super::{ArcId, PointId, ShapeId, ShapeKind, Sketch, SketchError, Spec};
+use super::{ArcId, PointId, ShapeId, ShapeKind, Sketch, SketchError};
 use crate::solve::{Outcome, Solver};
-use std::collections::{BTreeMap, BTreeSet};
 
 /// The shortest piece of a step tried, as a fraction of it, before giving up.
 const SHORTEST_PIECE: f64 = 1.0 / 64.0;
@@ -22,8 +23,30 @@ const SHORTEST_PIECE: f64 = 1.0 / 64.0;
 /// to 64; shorter pieces take fewer.
 const PIECE_ITERATIONS: usize = 50;
 
+/// A hinge may bend the other way in one piece of a step only while it is this close to
+/// straight (the change of the sine of its angle): passing through straight, it does so in
+/// short pieces; further, it jumped to the linkage's other branch. Dragged by 3 in one step, a
+/// two-link arm of 2.6 and 2.6 reached the cursor with its elbow the other way round (sines
+/// 0.999 and -0.987) where the straight path there stays within reach (random drags, seed
+/// 603). A free polyline's corner dragged across the line of its neighbours passes in pieces.
+///
+/// Only in the shortest piece tried may a hinge change branch: there no shorter piece would
+/// keep it, because the place the grip can reach nearest the cursor itself jumps. A crank's
+/// pin dragged straight across its pivot swings round to the other side as the cursor passes
+/// the pivot, bending the coupler's hinge the other way (`loci drag four_bar.json --point B
+/// --to=-1,0`). Triangles, arcs and tangent sides never turn over, in any piece.
+const BENT: f64 = 0.1;
+
 /// The relative step size of the dragged parameters (see [`crate::Config::dragged_scale`]).
 const DRAGGED_SCALE: f64 = 1e-4;
+
+/// What a drag keeps of the sketch's shape to compare after a piece of a step: signed areas
+/// of triangles and sides of tangencies (`turns`), sines of hinges' bends, arcs' sweeps.
+struct Senses {
+    turns: Vec<f64>,
+    bends: Vec<f64>,
+    sweeps: Vec<f64>,
+}
 
 /// What one drag step did.
 #[derive(Clone, Debug, PartialEq)]
@@ -37,7 +60,8 @@ pub struct DragStep {
     pub pieces: usize,
     /// Pieces undone because they failed or would have flipped something.
     pub refused: usize,
-    /// Pieces undone because they would have flipped a triangle, an arc or a tangent side.
+    /// Pieces undone because they would have flipped a triangle, a hinge's bend, an arc or a
+    /// tangent side.
     pub flips_prevented: usize,
     /// Where the dragged shape's grip ended.
     pub at: [f64; 2],
@@ -59,6 +83,9 @@ pub struct Drag<'a> {
     grip_ix: Vec<[usize; 2]>,
     /// Positions of the coordinates of each triangle's corners.
     triangles: Vec<[[usize; 2]; 3]>,
+    /// Positions of the coordinates of each hinge's points, `[a, b, c]` with bars `b`–`a`
+    /// and `b`–`c`.
+    hinges: Vec<[[usize; 2]; 3]>,
     /// Positions of the coordinates of each arc's centre, start and end.
     arcs: Vec<[[usize; 2]; 3]>,
     /// Tangencies whose side (of a line, or outside/inside another round) is kept.
@@ -158,7 +185,9 @@ impl Sketch {
             .with_dragged_scale(scale);
         self.restore_fixed();
         let ix = |p: PointId| self.point_indexes(p);
-        let triangles = self.triangles().into_iter().map(|t| t.map(ix)).collect();
+        let bars = Bars::of(self);
+        let triangles = bars.triangles().into_iter().map(|t| t.map(ix)).collect();
+        let hinges = bars.hinges().into_iter().map(|t| t.map(ix)).collect();
         let arcs = self
             .shapes()
             .filter(|(_, k)| *k == ShapeKind::Arc)
@@ -186,6 +215,7 @@ impl Sketch {
             solver: Solver::new(Self::SHAPE_GROUP, &params, cfg),
             grip_ix,
             triangles,
+            hinges,
             arcs,
             sides,
             fixed,
@@ -203,76 +233,6 @@ impl Sketch {
         target: [f64; 2],
     ) -> Result<DragStep, SketchError> {
         self.begin_drag(shape)?.step(target)
-    }
-
-    /// Triangles of lines and distances: three points (up to coincidence) joined pairwise by
-    /// lines or by distances between points.
-    fn triangles(&self) -> Vec<[PointId; 3]> {
-        // Classes of coincident points.
-        let mut parent: BTreeMap<PointId, PointId> = BTreeMap::new();
-        fn find(parent: &mut BTreeMap<PointId, PointId>, p: PointId) -> PointId {
-            let mut r = p;
-            while let Some(&q) = parent.get(&r) {
-                if q == r {
-                    break;
-                }
-                r = q;
-            }
-            parent.insert(p, r);
-            r
-        }
-        for (_, spec) in self.constraints() {
-            if let Spec::Coincident { a, b } = spec {
-                let (ra, rb) = (
-                    find(&mut parent, PointId(a.0)),
-                    find(&mut parent, PointId(b.0)),
-                );
-                if ra != rb {
-                    parent.insert(ra.max(rb), ra.min(rb));
-                }
-            }
-        }
-        let mut adj: BTreeMap<PointId, BTreeSet<PointId>> = BTreeMap::new();
-        for (s, k) in self.shapes() {
-            if k == ShapeKind::Line {
-                let [a, b] = self.line_points(super::LineId(s.0));
-                let (a, b) = (find(&mut parent, a), find(&mut parent, b));
-                if a != b {
-                    adj.entry(a).or_default().insert(b);
-                    adj.entry(b).or_default().insert(a);
-                }
-            }
-        }
-        // A distance between two points joins them as rigidly as a line with a length: three
-        // points with a distance on every side are a rigid triangle, which turns over only by
-        // a jump to its mirror image (a point held by two distances, dragged away, jumped
-        // across the line of its two anchors). Reference dimensions hold nothing.
-        for (id, spec) in self.constraints() {
-            if let Spec::Distance { a, b, .. } = spec {
-                if self.constraint(id).is_some_and(|(_, reference)| reference) {
-                    continue;
-                }
-                let (a, b) = (
-                    find(&mut parent, PointId(a.0)),
-                    find(&mut parent, PointId(b.0)),
-                );
-                if a != b {
-                    adj.entry(a).or_default().insert(b);
-                    adj.entry(b).or_default().insert(a);
-                }
-            }
-        }
-        let mut out = Vec::new();
-        for (u, nu) in &adj {
-            for v in nu.range(*u..).filter(|v| *v != u) {
-                for w in adj[v].range(*v..).filter(|w| *w != v) {
-                    if nu.contains(w) {
-                        out.push([*u, *v, *w]);
-                    }
-                }
-            }
-        }
-        out
     }
 }
 
@@ -331,7 +291,7 @@ impl Drag<'_> {
                 start[0] + next * (target[0] - start[0]),
                 start[1] + next * (target[1] - start[1]),
             ];
-            let (outcome, flipped) = self.attempt(goal)?;
+            let (outcome, flipped) = self.attempt(goal, piece <= SHORTEST_PIECE)?;
             step.outcome = outcome;
             if outcome.is_ok() && !flipped {
                 done = next;
@@ -356,7 +316,7 @@ impl Drag<'_> {
         let grip = self.grip();
         let miss = (grip[0] - target[0]).hypot(grip[1] - target[1]);
         if step.reached && miss > 1e-6 * span && miss < 1e-3 * span {
-            let (outcome, flipped) = self.attempt(target)?;
+            let (outcome, flipped) = self.attempt(target, false)?;
             if outcome.is_ok() && !flipped {
                 step.pieces += 1;
             }
@@ -366,8 +326,13 @@ impl Drag<'_> {
         Ok(step)
     }
 
-    /// One solve with the grip put at `goal`; undone when it fails or flips something.
-    fn attempt(&mut self, goal: [f64; 2]) -> Result<(Outcome, bool), SketchError> {
+    /// One solve with the grip put at `goal`; undone when it fails or flips something (a hinge's
+    /// bend counts unless `bends_may_turn`).
+    fn attempt(
+        &mut self,
+        goal: [f64; 2],
+        bends_may_turn: bool,
+    ) -> Result<(Outcome, bool), SketchError> {
         let snapshot: Vec<f64> = self.sketch.sys.params().iter().map(|p| p.val).collect();
         let soft_values = self.sketch.soft_values(&self.soft);
         let before = self.orientation();
@@ -389,7 +354,7 @@ impl Drag<'_> {
         self.sketch.write_soft(&self.soft, &soft_values);
         let report = self.solver.solve(&mut self.sketch.sys)?;
         self.compiled = Some(self.sketch.sys.revision());
-        let flipped = report.outcome.is_ok() && self.flipped(&before);
+        let flipped = report.outcome.is_ok() && self.flipped(&before, bends_may_turn);
         if !report.outcome.is_ok() || flipped {
             for (v, s) in self.sketch.sys.values_mut().zip(&snapshot) {
                 *v = *s;
@@ -398,18 +363,32 @@ impl Drag<'_> {
         Ok((report.outcome, flipped))
     }
 
-    /// Signed areas of the triangles and signed sides of the tangencies (each must keep its
-    /// sign), and sweeps of the arcs.
-    fn orientation(&self) -> (Vec<f64>, Vec<f64>) {
+    /// Signed areas of the triangles and signed sides of the tangencies, sines of the hinges'
+    /// bends, and sweeps of the arcs.
+    fn orientation(&self) -> Senses {
         let v = self.sketch.sys.params();
         let xy = |[i, j]: [usize; 2]| [v[i].val, v[j].val];
-        let tri = self
+        let turns = self
             .triangles
             .iter()
             .map(|t| area(t.map(xy)))
             .chain(self.sides.iter().map(|s| s.measure(v)))
             .collect();
-        let arcs = self
+        let bends = self
+            .hinges
+            .iter()
+            .map(|h| {
+                let [a, b, c] = h.map(xy);
+                let (u, w) = ([a[0] - b[0], a[1] - b[1]], [c[0] - b[0], c[1] - b[1]]);
+                let arms = ((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1])).sqrt();
+                if arms > 0.0 {
+                    (u[0] * w[1] - u[1] * w[0]) / arms
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        let sweeps = self
             .arcs
             .iter()
             .map(|a| {
@@ -419,23 +398,33 @@ impl Drag<'_> {
                 (end - start).to_degrees().rem_euclid(360.0)
             })
             .collect();
-        (tri, arcs)
+        Senses {
+            turns,
+            bends,
+            sweeps,
+        }
     }
 
-    /// Whether a triangle turned over, a tangency changed sides or an arc's sweep jumped
-    /// across a full turn.
-    fn flipped(&self, before: &(Vec<f64>, Vec<f64>)) -> bool {
+    /// Whether a triangle turned over, a tangency changed sides, a hinge bent the other way
+    /// without passing through straight, or an arc's sweep jumped across a full turn.
+    fn flipped(&self, before: &Senses, bends_may_turn: bool) -> bool {
         let now = self.orientation();
-        let tri = before.0.iter().zip(&now.0).any(|(a, b)| {
+        let turned = before.turns.iter().zip(&now.turns).any(|(a, b)| {
             let scale = a.abs().max(b.abs());
             scale > 0.0 && a * b < 0.0 && a.abs() > 1e-9 * scale.max(1.0)
         });
-        let arcs = before
-            .1
+        let bent = !bends_may_turn
+            && before
+                .bends
+                .iter()
+                .zip(&now.bends)
+                .any(|(a, b)| a * b < 0.0 && (a - b).abs() > BENT);
+        let swept = before
+            .sweeps
             .iter()
-            .zip(&now.1)
+            .zip(&now.sweeps)
             .any(|(a, b)| (a - b).abs() > 180.0);
-        tri || arcs
+        turned || bent || swept
     }
 
     /// Ends the drag, taking its soft constraints out (as dropping it does).

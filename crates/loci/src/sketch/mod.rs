@@ -25,6 +25,7 @@
 //! # Ok::<(), loci::sketch::SketchError>(())
 //! ```
 
+mod bars;
 mod calls;
 mod constraints;
 mod drag;
