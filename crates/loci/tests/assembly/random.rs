@@ -1010,10 +1010,11 @@ struct Seen {
 /// and 393 named false conflicts from far away (a floating group, rings of parts), and so did
 /// 27527 (a ring closed by a part on two cylindrical joints, left where it was drawn) and
 /// 32718 (a loop of two concentric pairs, a hinge and a slider, solved only from starts
-/// drawn at random).
-const PINNED: [u64; 19] = [
+/// drawn at random). 38107, lengthened, read `did_not_converge` naming nothing: its equations
+/// held only with a direction the wrong way round.
+const PINNED: [u64; 20] = [
     1344, 1487, 1554, 3632, 2547, 3383, 4538, 6293, 7906, 7935, 23796, 27969, 28202, 265, 383, 393,
-    27527, 27766, 32718,
+    27527, 27766, 32718, 38107,
 ];
 
 /// Runs the cases (or the one `LOCI_RANDOM_ASSEMBLY` names, printed) and fails on any finding.
