@@ -303,7 +303,7 @@ export interface SketchCheck {
 
 export interface DragStep {
   outcome: Outcome;
-  /** Whether the whole step was taken (else the sketch stays where the last good piece left it). */
+  /** Whether the whole step was taken (else the grip went toward the cursor as far as the constraints let it). */
   reached: boolean;
   pieces: number;
   refused: number;

@@ -324,6 +324,49 @@ fn a_two_link_arm_dragged_far_in_one_step_keeps_its_elbow() {
     assert_eq!(elbow(drag.sketch()).signum(), sense, "{st:?}");
 }
 
+/// A two-link arm dragged beyond its reach stretches toward the cursor and follows it round,
+/// rather than stopping where it first straightened.
+#[test]
+fn a_two_link_arm_dragged_beyond_its_reach_points_at_the_cursor() {
+    let mut s = Sketch::new();
+    let a = s.add_point(0.0, 0.0).unwrap();
+    let b = s.add_point(0.6, 0.8).unwrap();
+    let c = s.add_point(1.6, 0.8).unwrap();
+    let upper = s.add_line(a, b).unwrap();
+    let lower = s.add_line(b, c).unwrap();
+    s.fix(a).unwrap();
+    s.length(upper, 1.0).unwrap();
+    s.length(lower, 1.0).unwrap();
+    assert!(s.solve().unwrap().outcome.is_ok());
+    let mut drag = s.begin_drag(c).unwrap();
+    let (start, target) = ([1.6, 0.8], [3.0, 1.0]);
+    for k in 1..=15 {
+        let t = (f64::from(k) / 10.0).min(1.0);
+        let at = [
+            start[0] + t * (target[0] - start[0]),
+            start[1] + t * (target[1] - start[1]),
+        ];
+        let st = drag.step(at).unwrap();
+        let sk = drag.sketch();
+        assert!(
+            (dist(sk.point(a), sk.point(b)) - 1.0).abs() < 1e-7,
+            "step {k}"
+        );
+        assert!(
+            (dist(sk.point(b), sk.point(c)) - 1.0).abs() < 1e-7,
+            "step {k}"
+        );
+        if k >= 2 {
+            assert!(!st.reached, "step {k}: the cursor is beyond reach {st:?}");
+        }
+    }
+    // Stretched straight at the cursor: the nearest place it can reach.
+    let n = target[0].hypot(target[1]);
+    let nearest = [2.0 * target[0] / n, 2.0 * target[1] / n];
+    let grip = drag.sketch().point(c);
+    assert!(dist(grip, nearest) < 1e-2, "{grip:?} against {nearest:?}");
+}
+
 #[test]
 fn a_whole_circle_is_dragged_by_its_centre_and_keeps_its_radius() {
     let mut s = Sketch::new();

@@ -32,6 +32,9 @@ impl Rng {
     }
 }
 
+/// Steps of each drag.
+const STEPS: u32 = 150;
+
 /// How far a constraint may miss once a step has been taken.
 const HOLDS: f64 = 1e-6;
 
@@ -194,6 +197,8 @@ struct Dragged {
     swings: usize,
     followed: usize,
     took: f64,
+    /// The grip's distance from the cursor after each step, over the drawing's size, summed.
+    missed: f64,
 }
 
 fn drag_one(seed: u64) -> Result<Dragged, String> {
@@ -249,8 +254,8 @@ fn drag_one(seed: u64) -> Result<Dragged, String> {
     let mut swings = 0;
     // Whether the grip reached the cursor at the last step.
     let mut followed = true;
-    let (mut steps_followed, mut took_all) = (0, 0.0);
-    let steps = 150;
+    let (mut steps_followed, mut took_all, mut missed) = (0, 0.0, 0.0);
+    let steps = STEPS;
     for k in 0..steps {
         // A smooth wandering path, with now and then a long jump of the cursor.
         heading += rng.uniform(-0.4, 0.4);
@@ -269,6 +274,7 @@ fn drag_one(seed: u64) -> Result<Dragged, String> {
         let st = drag.step(target).map_err(|e| format!("step {k}: {e}"))?;
         let took = clock.elapsed().as_secs_f64() * 1e3;
         took_all += took;
+        missed += st.miss / size;
         let now = read(drag.sketch());
         if std::env::var("LOCI_RANDOM_DRAG_VERBOSE").is_ok() {
             eprintln!("step {k}: {took:.3} ms, target {target:?} {st:?}\n  points {now:?}");
@@ -337,6 +343,7 @@ fn drag_one(seed: u64) -> Result<Dragged, String> {
         swings,
         followed: steps_followed,
         took: took_all,
+        missed,
     })
 }
 
@@ -352,15 +359,18 @@ fn random_linkages_dragged_along_random_paths_hold_and_never_flip() {
         .unwrap_or(0);
     let mut failures = Vec::new();
     let (mut triangles, mut worst, mut followed, mut took) = (0, 0.0f64, 0, 0.0);
+    let (mut missed, mut steps) = (0.0, 0);
     let mut swings = 0;
     for seed in first..first + n {
         match drag_one(seed) {
             Ok(d) => {
+                steps += STEPS;
                 triangles += d.triangles;
                 worst = worst.max(d.worst_jump);
                 swings += d.swings;
                 followed += d.followed;
                 took += d.took;
+                missed += d.missed;
             }
             Err(e) => failures.push(format!("seed {seed}: {e}")),
         }
@@ -368,7 +378,9 @@ fn random_linkages_dragged_along_random_paths_hold_and_never_flip() {
     eprintln!(
         "{n} linkages dragged, {triangles} rigid triangles watched, the grip on the cursor at \
          {followed} steps, largest move per cursor move there {worst:.1}, {swings} steps in \
-         pieces bending a hinge the other way, steps {took:.0} ms in all; {} failed",
+         pieces bending a hinge the other way, the grip {:.4} of the drawing's size from the \
+         cursor on average, steps {took:.0} ms in all; {} failed",
+        missed / f64::from(steps),
         failures.len()
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));

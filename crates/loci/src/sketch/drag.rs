@@ -7,7 +7,8 @@
 //! of every triangle of lines and point-to-point distances, the bend of every hinge of two
 //! of them (see [`super::bars`]), the direction of every arc and the side of every tangency
 //! (see [`super::sides`]) is compared with before; a step that would turn one over (or that
-//! fails) is undone and taken in shorter pieces.
+//! fails) is undone and taken in shorter pieces. A step that stops short, its cursor beyond
+//! reach, then takes the grip toward the cursor as far as the constraints let it.
 
 use super::bars::Bars;
 use super::sides::Side;
@@ -40,6 +41,10 @@ const BENT: f64 = 0.1;
 /// The relative step size of the dragged parameters (see [`crate::Config::dragged_scale`]).
 const DRAGGED_SCALE: f64 = 1e-4;
 
+/// How many times a step that stopped short tries to reach toward the cursor (see
+/// [`Drag::reach`]), halving the way each time.
+const REACH_TRIES: usize = 4;
+
 /// What a drag keeps of the sketch's shape to compare after a piece of a step: signed areas
 /// of triangles and sides of tangencies (`turns`), sines of hinges' bends, arcs' sweeps.
 struct Senses {
@@ -54,7 +59,8 @@ pub struct DragStep {
     /// The outcome of the last solve (of the last piece tried).
     pub outcome: Outcome,
     /// Whether the whole step was taken; false when a piece of it could not be taken without a
-    /// failure or a flip, however short (the sketch stays where the last good piece left it).
+    /// failure or a flip, however short (the grip then goes toward the cursor as far as the
+    /// constraints let it, or stays where the last good piece left it).
     pub reached: bool,
     /// Pieces solved and kept.
     pub pieces: usize,
@@ -79,6 +85,9 @@ pub struct Drag<'a> {
     points: Vec<PointId>,
     soft: Vec<SoftRec>,
     solver: Solver,
+    /// The same solve with the grip weighing as much as the rest: where the cursor is beyond
+    /// reach (see [`Drag::reach`]).
+    reacher: Solver,
     /// Positions of the coordinates of the grip's points, x then y.
     grip_ix: Vec<[usize; 2]>,
     /// Positions of the coordinates of each triangle's corners.
@@ -212,6 +221,7 @@ impl Sketch {
             sketch: Held::Gone,
             points,
             soft,
+            reacher: Solver::new(Self::SHAPE_GROUP, &[], cfg.clone()),
             solver: Solver::new(Self::SHAPE_GROUP, &params, cfg),
             grip_ix,
             triangles,
@@ -291,7 +301,7 @@ impl Drag<'_> {
                 start[0] + next * (target[0] - start[0]),
                 start[1] + next * (target[1] - start[1]),
             ];
-            let (outcome, flipped) = self.attempt(goal, piece <= SHORTEST_PIECE)?;
+            let (outcome, flipped) = self.attempt(goal, piece <= SHORTEST_PIECE, false)?;
             step.outcome = outcome;
             if outcome.is_ok() && !flipped {
                 done = next;
@@ -307,6 +317,9 @@ impl Drag<'_> {
             }
         }
         step.reached = done >= 1.0;
+        if !step.reached {
+            self.reach(target, &mut step)?;
+        }
         // The grip's parameters weigh much more than the rest, but not infinitely: when the
         // target is within reach the grip stops a hair short of it (about 1e-8 of the step,
         // the square of their relative weight). Only when it stops further short than that
@@ -316,7 +329,7 @@ impl Drag<'_> {
         let grip = self.grip();
         let miss = (grip[0] - target[0]).hypot(grip[1] - target[1]);
         if step.reached && miss > 1e-6 * span && miss < 1e-3 * span {
-            let (outcome, flipped) = self.attempt(target, false)?;
+            let (outcome, flipped) = self.attempt(target, false, false)?;
             if outcome.is_ok() && !flipped {
                 step.pieces += 1;
             }
@@ -326,12 +339,43 @@ impl Drag<'_> {
         Ok(step)
     }
 
+    /// Where a step stopped short, a cursor beyond reach: the grip goes toward it as far as
+    /// the constraints let it. With the grip weighing far more than the rest, a linkage
+    /// stretched toward the cursor cannot follow it round: every solve from a grip put beyond
+    /// reach fails (the rest cannot take up the stretch, and moving the grip costs 1e8 times
+    /// more), and a two-link arm stopped where it first straightened. Solved with the grip
+    /// weighing as much as the rest, the linkage comes to rest near the place of the drawing
+    /// nearest the one asked for, its grip toward the cursor; the way is halved up to
+    /// [`REACH_TRIES`] times, and a solve that fails or flips anything is undone as in a step.
+    fn reach(&mut self, target: [f64; 2], step: &mut DragStep) -> Result<(), SketchError> {
+        let from = self.grip();
+        let mut part = 1.0;
+        for _ in 0..REACH_TRIES {
+            let goal = [
+                from[0] + part * (target[0] - from[0]),
+                from[1] + part * (target[1] - from[1]),
+            ];
+            let (outcome, flipped) = self.attempt(goal, false, true)?;
+            if outcome.is_ok() && !flipped {
+                step.outcome = outcome;
+                step.pieces += 1;
+                return Ok(());
+            }
+            step.refused += 1;
+            step.flips_prevented += usize::from(flipped);
+            part /= 2.0;
+        }
+        Ok(())
+    }
+
     /// One solve with the grip put at `goal`; undone when it fails or flips something (a hinge's
-    /// bend counts unless `bends_may_turn`).
+    /// bend counts unless `bends_may_turn`). `reaching` solves with the grip weighing as much
+    /// as the rest.
     fn attempt(
         &mut self,
         goal: [f64; 2],
         bends_may_turn: bool,
+        reaching: bool,
     ) -> Result<(Outcome, bool), SketchError> {
         let snapshot: Vec<f64> = self.sketch.sys.params().iter().map(|p| p.val).collect();
         let soft_values = self.sketch.soft_values(&self.soft);
@@ -352,7 +396,12 @@ impl Drag<'_> {
             }
         }
         self.sketch.write_soft(&self.soft, &soft_values);
-        let report = self.solver.solve(&mut self.sketch.sys)?;
+        let solver = if reaching {
+            &mut self.reacher
+        } else {
+            &mut self.solver
+        };
+        let report = solver.solve(&mut self.sketch.sys)?;
         self.compiled = Some(self.sketch.sys.revision());
         let flipped = report.outcome.is_ok() && self.flipped(&before, bends_may_turn);
         if !report.outcome.is_ok() || flipped {
