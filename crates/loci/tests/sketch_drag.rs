@@ -300,18 +300,30 @@ fn a_crank_dragged_across_its_pivot_swings_round_to_the_far_side() {
     assert!(dist(drag.sketch().point(b), [-1.0, 0.0]) < 1e-6);
 }
 
-#[test]
-fn a_two_link_arm_dragged_far_in_one_step_keeps_its_elbow() {
+/// A two-link arm from a fixed shoulder at the origin: its elbow and hand drawn at `elbow` and
+/// `hand`, its upper and lower arms of the lengths given; solved.
+fn arm(elbow: [f64; 2], hand: [f64; 2], upper: f64, lower: f64) -> (Sketch, [PointId; 3]) {
     let mut s = Sketch::new();
     let a = s.add_point(0.0, 0.0).unwrap();
-    let b = s.add_point(-2.328_134_5, 1.139_978_5).unwrap();
-    let c = s.add_point(-3.411_900_1, -1.272_603_6).unwrap();
-    let upper = s.add_line(a, b).unwrap();
-    let lower = s.add_line(b, c).unwrap();
+    let b = s.add_point(elbow[0], elbow[1]).unwrap();
+    let c = s.add_point(hand[0], hand[1]).unwrap();
+    let ab = s.add_line(a, b).unwrap();
+    let bc = s.add_line(b, c).unwrap();
     s.fix(a).unwrap();
-    s.length(upper, 2.592_250_2).unwrap();
-    s.length(lower, 2.644_825_2).unwrap();
+    s.length(ab, upper).unwrap();
+    s.length(bc, lower).unwrap();
     assert!(s.solve().unwrap().outcome.is_ok());
+    (s, [a, b, c])
+}
+
+#[test]
+fn a_two_link_arm_dragged_far_in_one_step_keeps_its_elbow() {
+    let (mut s, [a, b, c]) = arm(
+        [-2.328_134_5, 1.139_978_5],
+        [-3.411_900_1, -1.272_603_6],
+        2.592_250_2,
+        2.644_825_2,
+    );
     let elbow = |sk: &Sketch| {
         let (pa, pb, pc) = (sk.point(a), sk.point(b), sk.point(c));
         (pb[0] - pa[0]) * (pc[1] - pb[1]) - (pb[1] - pa[1]) * (pc[0] - pb[0])
@@ -328,16 +340,7 @@ fn a_two_link_arm_dragged_far_in_one_step_keeps_its_elbow() {
 /// rather than stopping where it first straightened.
 #[test]
 fn a_two_link_arm_dragged_beyond_its_reach_points_at_the_cursor() {
-    let mut s = Sketch::new();
-    let a = s.add_point(0.0, 0.0).unwrap();
-    let b = s.add_point(0.6, 0.8).unwrap();
-    let c = s.add_point(1.6, 0.8).unwrap();
-    let upper = s.add_line(a, b).unwrap();
-    let lower = s.add_line(b, c).unwrap();
-    s.fix(a).unwrap();
-    s.length(upper, 1.0).unwrap();
-    s.length(lower, 1.0).unwrap();
-    assert!(s.solve().unwrap().outcome.is_ok());
+    let (mut s, [a, b, c]) = arm([0.6, 0.8], [1.6, 0.8], 1.0, 1.0);
     let mut drag = s.begin_drag(c).unwrap();
     let (start, target) = ([1.6, 0.8], [3.0, 1.0]);
     for k in 1..=15 {
