@@ -755,7 +755,10 @@ fn far_start_check(
         Outcome::Inconsistent => wrong.push(format!(
             "seed {seed}: from a far start, a conflict among mates that hold together: {rf}"
         )),
-        Outcome::DidNotConverge => seen.far_failed += 1,
+        Outcome::DidNotConverge => {
+            seen.far_failed += 1;
+            eprintln!("seed {seed}: from a far start, given up on (did_not_converge)");
+        }
         _ => {
             seen.far_solved += 1;
             let miss = largest(&all_residuals(&b.cases, &places_of(&rf)));
