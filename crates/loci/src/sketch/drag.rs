@@ -45,6 +45,14 @@ const DRAGGED_SCALE: f64 = 1e-4;
 /// [`Drag::reach`]), halving the way each time.
 const REACH_TRIES: usize = 4;
 
+/// How much the grip weighs in a solve of a drag: far more than the rest (a step), or as much
+/// (reaching toward a cursor beyond reach, see [`Drag::reach`]).
+#[derive(Clone, Copy)]
+enum Grip {
+    Heavy,
+    Even,
+}
+
 /// What a drag keeps of the sketch's shape to compare after a piece of a step: signed areas
 /// of triangles and sides of tangencies (`turns`), sines of hinges' bends, arcs' sweeps.
 struct Senses {
@@ -246,6 +254,11 @@ impl Sketch {
     }
 }
 
+/// The point a fraction `t` of the way from `a` to `b`.
+fn toward(a: [f64; 2], b: [f64; 2], t: f64) -> [f64; 2] {
+    [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+}
+
 fn area(p: [[f64; 2]; 3]) -> f64 {
     (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0])
 }
@@ -297,11 +310,8 @@ impl Drag<'_> {
         };
         while done < 1.0 {
             let next = (done + piece).min(1.0);
-            let goal = [
-                start[0] + next * (target[0] - start[0]),
-                start[1] + next * (target[1] - start[1]),
-            ];
-            let (outcome, flipped) = self.attempt(goal, piece <= SHORTEST_PIECE, false)?;
+            let goal = toward(start, target, next);
+            let (outcome, flipped) = self.attempt(goal, piece <= SHORTEST_PIECE, Grip::Heavy)?;
             step.outcome = outcome;
             if outcome.is_ok() && !flipped {
                 done = next;
@@ -329,7 +339,7 @@ impl Drag<'_> {
         let grip = self.grip();
         let miss = (grip[0] - target[0]).hypot(grip[1] - target[1]);
         if step.reached && miss > 1e-6 * span && miss < 1e-3 * span {
-            let (outcome, flipped) = self.attempt(target, false, false)?;
+            let (outcome, flipped) = self.attempt(target, false, Grip::Heavy)?;
             if outcome.is_ok() && !flipped {
                 step.pieces += 1;
             }
@@ -351,11 +361,8 @@ impl Drag<'_> {
         let from = self.grip();
         let mut part = 1.0;
         for _ in 0..REACH_TRIES {
-            let goal = [
-                from[0] + part * (target[0] - from[0]),
-                from[1] + part * (target[1] - from[1]),
-            ];
-            let (outcome, flipped) = self.attempt(goal, false, true)?;
+            let goal = toward(from, target, part);
+            let (outcome, flipped) = self.attempt(goal, false, Grip::Even)?;
             if outcome.is_ok() && !flipped {
                 step.outcome = outcome;
                 step.pieces += 1;
@@ -369,13 +376,12 @@ impl Drag<'_> {
     }
 
     /// One solve with the grip put at `goal`; undone when it fails or flips something (a hinge's
-    /// bend counts unless `bends_may_turn`). `reaching` solves with the grip weighing as much
-    /// as the rest.
+    /// bend counts unless `bends_may_turn`), solved with the grip weighing as `weight` says.
     fn attempt(
         &mut self,
         goal: [f64; 2],
         bends_may_turn: bool,
-        reaching: bool,
+        weight: Grip,
     ) -> Result<(Outcome, bool), SketchError> {
         let snapshot: Vec<f64> = self.sketch.sys.params().iter().map(|p| p.val).collect();
         let soft_values = self.sketch.soft_values(&self.soft);
@@ -396,10 +402,9 @@ impl Drag<'_> {
             }
         }
         self.sketch.write_soft(&self.soft, &soft_values);
-        let solver = if reaching {
-            &mut self.reacher
-        } else {
-            &mut self.solver
+        let solver = match weight {
+            Grip::Heavy => &mut self.solver,
+            Grip::Even => &mut self.reacher,
         };
         let report = solver.solve(&mut self.sketch.sys)?;
         self.compiled = Some(self.sketch.sys.revision());
