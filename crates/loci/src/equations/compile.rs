@@ -58,6 +58,7 @@ pub(crate) fn compile_group(
     dragged: &[ParamId],
     express: bool,
     values: &[f64],
+    drawn: &[f64],
 ) -> Result<Compiled, ModelError> {
     let carried = if express {
         Carried::of(sys, group, dragged)
@@ -79,7 +80,7 @@ pub(crate) fn compile_group(
     if mine.len() < crate::par::MIN_PARALLEL {
         out.links.reserve(mine.len());
         for c in &mine {
-            compile_constraint(&r, c, values, &mut x, &mut out)?;
+            compile_constraint(&r, c, values, drawn, &mut x, &mut out)?;
         }
     } else {
         const CHUNK: usize = 1024;
@@ -92,7 +93,7 @@ pub(crate) fn compile_group(
                 let mut part = Compiled::default();
                 part.links.reserve(chunk.len());
                 for c in chunk {
-                    compile_constraint(&r, c, values, x, &mut part)?;
+                    compile_constraint(&r, c, values, drawn, x, &mut part)?;
                 }
                 Ok(part)
             },
@@ -415,9 +416,18 @@ fn compile_constraint(
     r: &Resolver<'_>,
     c: &Constraint,
     values: &[f64],
+    drawn: &[f64],
     x: &mut Vec<f64>,
     out: &mut Compiled,
 ) -> Result<(), ModelError> {
+    // A point held where it is dragged is held where the drawing has it, whatever start the
+    // solve begins from: a solve from a solution built another way, in which the point had
+    // moved, held it there and read `okay` with the point off its place.
+    let values = if c.kind == ConstraintKind::WhereDragged {
+        drawn
+    } else {
+        values
+    };
     if super::direct::links(r.sys, c, values, x, out) {
         return Ok(());
     }

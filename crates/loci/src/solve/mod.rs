@@ -17,6 +17,8 @@ mod envelope;
 pub(crate) mod gram;
 pub(crate) mod newton;
 mod order;
+#[cfg(test)]
+mod pinned_tests;
 mod plan;
 pub(crate) mod rank;
 #[cfg(test)]
@@ -566,14 +568,23 @@ fn solve_values(
             plain: cache.plain,
             ..Cache::default()
         };
-        let compiled = compile_group(sys, group, dragged, !cache.plain, &values)?;
+        // The drawing's own values, where the solve starts elsewhere.
+        let own: Vec<f64>;
+        let drawn = match start {
+            Some(_) => {
+                own = params.iter().map(|p| p.val).collect();
+                &own[..]
+            }
+            None => &values[..],
+        };
+        let compiled = compile_group(sys, group, dragged, !cache.plain, &values, drawn)?;
         cache.kernels = compiled.kernels;
         cache.links = compiled.links;
         cache.duplicates = compiled.duplicates;
         cache.carried = compiled.carried;
         cache.key = Some(key);
     } else {
-        refresh(sys, &values, cache);
+        refresh(sys, cache);
     }
     if cfg.solvespace_angles {
         let mut x = Vec::new();
@@ -804,7 +815,7 @@ fn solve_values(
 
 /// Brings cached equations up to date with the system's current values: constraint values,
 /// and the values that `where_dragged` and circle diameters fix parameters at.
-fn refresh(sys: &System, values: &[f64], cache: &mut Cache) {
+fn refresh(sys: &System, cache: &mut Cache) {
     for k in &mut cache.kernels {
         if let Owner::Constraint(h) = k.owner {
             if let Some(c) = sys.constraint(h) {
@@ -823,9 +834,11 @@ fn refresh(sys: &System, values: &[f64], cache: &mut Cache) {
         } = l
         {
             if let Some(c) = sys.constraint(*h) {
+                // A point held where it is dragged: where the drawing has it now, not where
+                // the solve starts.
                 *value = match c.kind {
                     crate::model::ConstraintKind::Diameter => c.val / 2.0,
-                    _ => values[*p],
+                    _ => sys.params()[*p].val,
                 };
             }
         }

@@ -187,7 +187,7 @@ fn values(sys: &System) -> Vec<f64> {
 /// values, evaluated as the equations a solve without expressions has.
 fn worst_condition(sys: &System) -> f64 {
     let v = values(sys);
-    let compiled = without(|| compile_group(sys, GroupId(MOVING), &[], true, &v)).unwrap();
+    let compiled = without(|| compile_group(sys, GroupId(MOVING), &[], true, &v, &v)).unwrap();
     let carried = [AT_ORIGIN, AT_X, AT_Y, TURNED, SHIFTED].map(EntityId);
     let mut worst = 0.0f64;
     let mut n = 0;
@@ -360,7 +360,7 @@ fn derivatives_through_the_carrier_are_those_of_the_composition() {
         let v = values(&sys);
         assert_eq!(v.len(), v0.len() + 7, "{what}");
         let carried = Carried::of(&sys, GroupId(MOVING), &[]);
-        let implicit = without(|| compile_group(&sys, GroupId(MOVING), &[], true, &v)).unwrap();
+        let implicit = without(|| compile_group(&sys, GroupId(MOVING), &[], true, &v, &v)).unwrap();
         // d own / d carrier, from each condition `own - f(carrier) = 0`, by parameter.
         let mut d_own: HashMap<usize, Vec<(usize, f64)>> = HashMap::new();
         for k in &implicit.kernels {
@@ -783,7 +783,7 @@ proptest::proptest! {
             sys.set_value(*p, v);
         }
         let v = values(&sys);
-        let compiled = compile_group(&sys, GroupId(MOVING), &[], true, &v).unwrap();
+        let compiled = compile_group(&sys, GroupId(MOVING), &[], true, &v, &v).unwrap();
         let (mut written, mut covered) = (0, 0);
         for k in &compiled.kernels {
             use super::super::EqKind;

@@ -534,7 +534,7 @@ pub(super) fn compile_implicit(sys: &System, h: u32) -> One {
     // The condition itself, as a solve that keeps the entity's own unknowns has it (a solve
     // reads a carried entity as its expression instead, with no condition).
     let compiled =
-        super::super::carried::without(|| compile_group(sys, e.group, &[], true, &values))
+        super::super::carried::without(|| compile_group(sys, e.group, &[], true, &values, &values))
             .expect("group compiles");
     compiled
         .kernels
