@@ -413,6 +413,8 @@ impl Drag<'_> {
             for (v, s) in self.sketch.sys.values_mut().zip(&snapshot) {
                 *v = *s;
             }
+        } else {
+            self.sketch.positive_radii();
         }
         Ok((report.outcome, flipped))
     }
