@@ -190,3 +190,30 @@ fn a_user_constraint_that_only_agrees_with_soft_ones_is_not_redundant() {
         "{rep:?}"
     );
 }
+
+#[test]
+fn a_fixed_point_moved_off_goes_back_and_its_lines_keep_their_lengths() {
+    // A polyline from a fixed point, the point then moved off where it was fixed (as a
+    // program may move any point): the solve puts it back, and the lines keep the lengths
+    // they have with it there, so nothing else moves.
+    let mut s = Sketch::new();
+    let pts = [[0.0, 0.0], [3.0, 1.0], [5.0, 3.0]].map(|p| s.add_point(p[0], p[1]).unwrap());
+    let lines = [0, 1].map(|i| s.add_line(pts[i], pts[i + 1]).unwrap());
+    s.fix(pts[0]).unwrap();
+    let before: Vec<f64> = lines.iter().map(|l| len(&s, *l)).collect();
+    s.move_point(pts[0], [1.0, -0.5]).unwrap();
+    let r = s.solve().unwrap();
+    assert_eq!(r.outcome, Outcome::Okay, "{r:?}");
+    assert_eq!(
+        r.kept,
+        vec![Soft::LineLength(lines[0]), Soft::LineLength(lines[1])]
+    );
+    assert_eq!(s.point(pts[0]), [0.0, 0.0]);
+    for (l, b) in lines.iter().zip(&before) {
+        assert!((len(&s, *l) - b).abs() < TOL, "{} against {b}", len(&s, *l));
+    }
+    for (p, at) in pts[1..].iter().zip([[3.0, 1.0], [5.0, 3.0]]) {
+        let q = s.point(*p);
+        assert!((q[0] - at[0]).hypot(q[1] - at[1]) < TOL, "{q:?}");
+    }
+}

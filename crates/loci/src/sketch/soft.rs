@@ -268,12 +268,20 @@ impl Sketch {
         let mut soft = self.add_soft()?;
         let out = self.solve_with(&mut soft);
         self.remove_soft(&soft);
+        if out.as_ref().is_ok_and(|r| r.outcome.is_ok()) {
+            self.positive_radii();
+        }
         out
     }
 
     fn solve_once(&mut self, soft: &mut [SoftRec]) -> Result<Report, SketchError> {
-        let values = self.soft_values(soft);
+        // Fixed points go back first: the lengths and angles soft constraints keep are those
+        // of the drawing the solve starts from. Read before, a point moved off where it was
+        // fixed gave its lines the lengths of the moved drawing in a first solve and the
+        // fixed one in a second (after a soft constraint in the way was dropped), and the
+        // line kept neither that it was reported to keep.
         self.restore_fixed();
+        let values = self.soft_values(soft);
         self.write_soft(soft, &values);
         Ok(crate::solve(
             &mut self.sys,
