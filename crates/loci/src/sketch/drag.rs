@@ -109,6 +109,9 @@ pub struct Drag<'a> {
     sides: Vec<Side>,
     /// Fixed points' coordinates: parameters, positions and values.
     fixed: Vec<(crate::ParamId, usize, f64)>,
+    /// Every circle's radius parameter and its position, turned positive after each step
+    /// ([`Sketch::positive_radii`]).
+    radii: Vec<(crate::ParamId, usize)>,
     /// The system revision the solver compiled, once it has.
     compiled: Option<u64>,
 }
@@ -237,6 +240,7 @@ impl Sketch {
             arcs,
             sides,
             fixed,
+            radii: self.circle_radii(),
             compiled: None,
         })
     }
@@ -414,7 +418,7 @@ impl Drag<'_> {
                 *v = *s;
             }
         } else {
-            self.sketch.positive_radii();
+            self.sketch.positive_radii(&self.radii);
         }
         Ok((report.outcome, flipped))
     }

@@ -481,28 +481,35 @@ impl Sketch {
         }
     }
 
-    /// The position of a circle's radius in the parameter vector.
     /// Turns positive every circle radius a solve left negative. The core holds a circle's
     /// points at |r| (SolveSpace writes `d² - r²`), so Newton can take a free radius through
     /// zero and read `okay` with the same circle drawn at -r; a user reads a radius as a
     /// length, and so does every measure of the sketch. Each equation a sketch writes on a
     /// circle's radius reads |r|, holds a positive value, or equates two radii (which went
     /// negative together, and turn together), so the drawing is unchanged.
-    pub(crate) fn positive_radii(&mut self) {
-        let negative: Vec<(ParamId, f64)> = self
-            .shapes
-            .values()
-            .filter_map(|s| match s.geometry {
-                Geometry::Circle { param, ix, .. } => Some((param, self.sys.params()[ix].val)),
-                _ => None,
-            })
-            .filter(|&(_, r)| r < 0.0)
-            .collect();
-        for (p, r) in negative {
-            self.sys.set_value(p, -r);
+    /// `radii` are the circles' ([`Sketch::circle_radii`]), read once by a drag for all its
+    /// steps.
+    pub(crate) fn positive_radii(&mut self, radii: &[(ParamId, usize)]) {
+        for &(p, ix) in radii {
+            let r = self.sys.params()[ix].val;
+            if r < 0.0 {
+                self.sys.set_value(p, -r);
+            }
         }
     }
 
+    /// Every circle's radius parameter and its position in the parameter vector.
+    pub(crate) fn circle_radii(&self) -> Vec<(ParamId, usize)> {
+        self.shapes
+            .values()
+            .filter_map(|s| match s.geometry {
+                Geometry::Circle { param, ix, .. } => Some((param, ix)),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// The position of a circle's radius in the parameter vector.
     pub(crate) fn circle_radius_index(&self, c: CircleId) -> usize {
         match &self.shapes[&c.0].geometry {
             Geometry::Circle { ix, .. } => *ix,

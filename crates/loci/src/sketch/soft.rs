@@ -269,7 +269,7 @@ impl Sketch {
         let out = self.solve_with(&mut soft);
         self.remove_soft(&soft);
         if out.as_ref().is_ok_and(|r| r.outcome.is_ok()) {
-            self.positive_radii();
+            self.positive_radii(&self.circle_radii());
         }
         out
     }
