@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod perturbed_chain;
+pub mod rng;
 
 use loci::{Constraint, ConstraintKind, Entity, Param, System};
 
