@@ -2,8 +2,8 @@
 //! pure-Python package `loci` (in `python/loci`) re-exports it and adds the `loci.slvs`
 //! drop-in for SolveSpace's module.
 //!
-//! Three layers are bound: the SolveSpace model ([`system::PySystem`]), the sketcher
-//! ([`sketch::PySketch`]) and assemblies ([`assembly::PyAssembly`]). Every error crosses the
+//! Three layers are bound: the SolveSpace model (`loci.System`, `system.rs`), the sketcher
+//! (`loci.Sketch`, `sketch.rs`) and assemblies (`loci.Assembly`, `assembly.rs`). Every error crosses the
 //! boundary as a `loci.LociError` subclass; nothing panics into Python; solves release the GIL.
 
 mod assembly;

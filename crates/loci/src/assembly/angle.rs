@@ -11,7 +11,7 @@
 //! perpendicular to `c = -sin(t) a + cos(t) (n × a)`, a direction fixed in A's frame. It is
 //! well conditioned at every target, 0 and 180 degrees included (a cosine equation has a
 //! double root there), and its only other root, half a turn away, is kept out of reach by
-//! turning the parts to within a quarter turn first ([`super::stepped`]).
+//! turning the parts to within a quarter turn first ([`Assembly::solve_stepped`](super::Assembly::solve_stepped)).
 
 /// The largest rotation one stepped iteration applies to a component (10 degrees), as the
 /// seed's parallel alignment utilities have it.

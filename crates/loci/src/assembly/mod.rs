@@ -3,7 +3,7 @@
 //!
 //! A component's pose is a translation and a unit quaternion; its references (faces, edges,
 //! circular edges, vertices, axes, its frame) live in its own frame. Every mate is written
-//! as core constraints between entities carried by the poses ([`build`]), so the core's
+//! as core constraints between entities carried by the poses (`build.rs`), so the core's
 //! solve, degrees of freedom and conflict diagnosis apply unchanged: grounded components are
 //! constants and never move, Newton's least-movement steps keep every part near where it
 //! was, and [`Assembly::solve`] reports each mate's status and each component's remaining

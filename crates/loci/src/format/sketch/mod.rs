@@ -1,4 +1,4 @@
-//! Sketch files: a [`Sketch`] as JSON, naming shapes and constraints the way its API does.
+//! Sketch files: a [`Sketch`](crate::sketch::Sketch) as JSON, naming shapes and constraints the way its API does.
 //!
 //! ```json
 //! { "sketch": {
