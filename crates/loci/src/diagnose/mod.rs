@@ -417,7 +417,8 @@ pub(crate) fn name_conflicts(
 /// Whether the members of `set`, kept alone in a system of their own (with the entities and
 /// parameters they refer to), solve by one of the solve's rescues
 /// ([`crate::solve::rescued_alone`]), or from starts drawn at random
-/// ([`crate::solve::holds_scattered`]).
+/// ([`crate::solve::holds_scattered`]; a large set by the rescues from there too,
+/// [`crate::solve::rescued_scattered`]).
 ///
 /// Where only a random start solves it, the values there are pushed on `solutions`: every
 /// parameter of `sys` as it stands but those of the set, which are where it holds.
@@ -434,7 +435,9 @@ fn built_alone(
     if crate::solve::rescued_alone(&part, group, cfg) {
         return true;
     }
-    let Some(held) = crate::solve::holds_scattered(&part, group, cfg) else {
+    let Some(held) = crate::solve::holds_scattered(&part, group, cfg)
+        .or_else(|| crate::solve::rescued_scattered(&part, group, cfg))
+    else {
         return false;
     };
     let mut values: Vec<f64> = sys.params().iter().map(|p| p.val).collect();

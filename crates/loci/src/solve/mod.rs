@@ -39,7 +39,9 @@ pub use config::Config;
 pub(crate) use gram::MAX_PRODUCTS;
 pub use report::{Outcome, Report};
 use rescue::{found_further_off, rescued};
-pub(crate) use rescue::{holds_alone, holds_scattered, rescued_alone, solution_further_off};
+pub(crate) use rescue::{
+    holds_alone, holds_scattered, rescued_alone, rescued_scattered, solution_further_off,
+};
 
 use crate::equations::{compile_group, still_duplicates, Carried, Link, Owner};
 use crate::error::SolveError;

@@ -77,6 +77,62 @@ pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> Opt
     if sys.validate().is_err() || check_group(sys, group).is_err() {
         return None;
     }
+    let rounds = if constraints_of(sys, group) <= SMALL_GROUP {
+        SMALL_ROUNDS
+    } else {
+        1
+    };
+    // Moved by finite amounts, the values stay numbers: validated once, above.
+    from_scattered(sys, group, rounds * SCATTERED_STARTS.len(), |moved| {
+        solution_as_it_stands(moved, group, cfg)
+    })
+}
+
+/// How many of [`SCATTERED_STARTS`] [`rescued_scattered`] looks for a solution from.
+const RESCUED_STARTS: usize = 4;
+
+/// Whether a group of more than [`SMALL_GROUP`] constraints solves by the ways [`rescued`]
+/// looks for a solution, from the first [`RESCUED_STARTS`] of the starts [`holds_scattered`]
+/// solves from: the last check of a large set before it is named, and the last search of a
+/// large group that fails every other way. A set of 24 constraints of a fuzzed sketch
+/// (`bench/data/fuzzed_conflict.json`) failed from the drawing by every rescue and from every
+/// scattered start by Newton alone (64 of them tried), and was named a conflict; built up one
+/// constraint at a time with steps of least movement from the second scattered start, it
+/// holds. A small set has [`SMALL_ROUNDS`] rounds of starts already, and building it up from
+/// each would cost more than its check is worth.
+///
+/// Returns the values of every parameter of `sys` where the group holds, if it does.
+pub(crate) fn rescued_scattered(sys: &System, group: GroupId, cfg: &Config) -> Option<Vec<f64>> {
+    if sys.validate().is_err()
+        || check_group(sys, group).is_err()
+        || constraints_of(sys, group) <= SMALL_GROUP
+    {
+        return None;
+    }
+    from_scattered(sys, group, RESCUED_STARTS, |moved| {
+        let mut cache = Cache::default();
+        let found = rescued(moved, group, &[], cfg, &mut cache).ok().flatten();
+        cache.discard();
+        found.map(|(_, values)| values)
+    })
+}
+
+/// The number of constraints of `group`.
+fn constraints_of(sys: &System, group: GroupId) -> usize {
+    sys.constraints()
+        .iter()
+        .filter(|c| c.group == group)
+        .count()
+}
+
+/// The first of the first `starts` scattered starts (see [`holds_scattered`]) that `solve`
+/// finds a solution from, `solve` given `sys` with the group's parameters moved there.
+fn from_scattered(
+    sys: &System,
+    group: GroupId,
+    starts: usize,
+    mut solve: impl FnMut(&System) -> Option<Vec<f64>>,
+) -> Option<Vec<f64>> {
     // A point held where it is dragged stays: moved, it would be held somewhere else.
     let held: Vec<ParamId> = sys
         .constraints()
@@ -85,20 +141,7 @@ pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> Opt
         .filter_map(|c| c.pt_a.and_then(|e| sys.entity(e)))
         .flat_map(|e| e.kind.params().iter().copied())
         .collect();
-    let constraints = sys
-        .constraints()
-        .iter()
-        .filter(|c| c.group == group)
-        .count();
-    let rounds = if constraints <= SMALL_GROUP {
-        SMALL_ROUNDS
-    } else {
-        1
-    };
-    let spreads = SCATTERED_STARTS
-        .iter()
-        .cycle()
-        .take(rounds * SCATTERED_STARTS.len());
+    let spreads = SCATTERED_STARTS.iter().cycle().take(starts);
     spreads.enumerate().find_map(|(k, &spread)| {
         let mut moved = sys.clone();
         for p in moved
@@ -107,8 +150,7 @@ pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> Opt
         {
             p.val += spread * (1.0 + p.val.abs()) * scatter(k, p.h, p.val);
         }
-        // Moved by finite amounts, the values stay numbers: validated once, above.
-        solution_as_it_stands(&moved, group, cfg)
+        solve(&moved)
     })
 }
 
@@ -235,8 +277,9 @@ fn from_held(
 /// The solve of `group` from further off than the drawing, when nothing else found one: from
 /// where a set the search for conflicts dropped holds ([`from_held`]); failing that, for a
 /// group that is not being dragged and has at most [`SCATTERED_WHOLE_UP_TO`] unknowns, from
-/// starts drawn at random ([`holds_scattered`]: eight solves, paid only by a group that
-/// fails every other way). Six constraints of a random sketch (seed 473,644 less its
+/// starts drawn at random ([`holds_scattered`]: eight solves, or 64 for a small group; a
+/// large one is also built up from four of them, [`rescued_scattered`]), paid only by a
+/// group that fails every other way. Six constraints of a random sketch (seed 473,644 less its
 /// constraint 9: two vertical lines, a symmetry, two distances and an angle) stopped short
 /// from the drawing, naming nothing, and solve from a start moved a few percent.
 pub(super) fn found_further_off(
@@ -254,7 +297,7 @@ pub(super) fn found_further_off(
     if !dragged.is_empty() || unknowns > SCATTERED_WHOLE_UP_TO {
         return Ok(None);
     }
-    match holds_scattered(sys, group, cfg) {
+    match holds_scattered(sys, group, cfg).or_else(|| rescued_scattered(sys, group, cfg)) {
         Some(start) => from_held(sys, group, dragged, cfg, cache, &[start]),
         None => Ok(None),
     }
