@@ -95,11 +95,11 @@ const RESCUED_STARTS: usize = 4;
 /// looks for a solution, from the first [`RESCUED_STARTS`] of the starts [`holds_scattered`]
 /// solves from: the last check of a large set before it is named, and the last search of a
 /// large group that fails every other way. A set of 24 constraints of a fuzzed sketch
-/// (`bench/data/fuzzed_conflict.json`) failed from the drawing by every rescue and from every
-/// scattered start by Newton alone (64 of them tried), and was named a conflict; built up one
-/// constraint at a time with steps of least movement from the second scattered start, it
-/// holds. A small set has [`SMALL_ROUNDS`] rounds of starts already, and building it up from
-/// each would cost more than its check is worth.
+/// (`bench/data/fuzzed_conflict.json`) failed from the drawing by every rescue and from its
+/// eight scattered starts by Newton alone (from 64 too, tried), and was named a conflict;
+/// built up one constraint at a time with steps of least movement from the second scattered
+/// start, it holds. A small set has [`SMALL_ROUNDS`] rounds of starts already, and building
+/// it up from each would cost more than its check is worth.
 ///
 /// Returns the values of every parameter of `sys` where the group holds, if it does.
 pub(crate) fn rescued_scattered(sys: &System, group: GroupId, cfg: &Config) -> Option<Vec<f64>> {
