@@ -244,6 +244,40 @@ fn a_workplane_built_from_the_wrong_parts() {
 }
 
 #[test]
+fn a_line_from_a_point_to_itself() {
+    // It has no direction: a point on it divided by its zero length, and read `inconsistent`
+    // with a largest residual of 0 (not a number, left out of the largest).
+    let mut s = base();
+    s.line(320, 2, 302, 302);
+    s.constrain(
+        Constraint::new(0, 2, K::PtOnLine)
+            .with_points(301, 0)
+            .with_entities([320, 0, 0, 0]),
+    );
+    solve_err(
+        s.sys,
+        ModelError::WrongKind {
+            owner: e_id(320),
+            field: "points[1]",
+            entity: EntityId(302),
+            found: EntityType::PointIn2d,
+            expected: "a point other than points[0]",
+        },
+    );
+    // Two points at one place are a line of zero length, not a malformed one: it solves.
+    let mut s = base();
+    s.point(304, 2, [10.0, 1.0]);
+    s.line(320, 2, 302, 304);
+    s.on_points(2, K::PtPtDistance, 302, 304, 3.0);
+    s.constrain(
+        Constraint::new(0, 2, K::PtOnLine)
+            .with_points(301, 0)
+            .with_entities([320, 0, 0, 0]),
+    );
+    let r = s.sys.solve_group(2).unwrap();
+    assert!(r.outcome.is_ok(), "{r:?}");
+}
+#[test]
 fn a_2d_point_without_a_workplane_and_a_point_in_its_own_plane() {
     let mut s = base();
     let mut e = Entity::point_2d(304, 2, WP, [1000, 1001]);

@@ -190,6 +190,19 @@ impl System {
                 for (field, &r) in FIELDS.iter().zip(ps) {
                     self.expect(owner, field, r, point, "a point")?;
                 }
+                // A line from a point to itself has no direction: every equation that reads
+                // one divides by its zero length, and its residual is not a number.
+                if let EntityKind::LineSegment { points: [a, b] } = e.kind {
+                    if a == b {
+                        return Err(ModelError::WrongKind {
+                            owner,
+                            field: "points[1]",
+                            entity: b,
+                            found: self.entity_of(owner, "points[1]", b)?,
+                            expected: "a point other than points[0]",
+                        });
+                    }
+                }
             }
             EntityKind::Circle {
                 center,

@@ -466,7 +466,8 @@ fn points_outside_the_workplane_take_the_generic_path() {
         fx.p3(MOVING, [1.0, 0.0, 1.0]),
     );
     let l0 = fx.line_of(MOVING, Form::Free, q0, q1);
-    let l1 = fx.line_of(MOVING, Form::Plane, pa, pa);
+    let pc = fx.p2(MOVING, fx.wp, [2.0, 1.0]);
+    let l1 = fx.line_of(MOVING, Form::Plane, pa, pc);
     let c = fx
         .con(K::Angle, Form::Plane)
         .with_entities([l0, l1, 0, 0])
