@@ -89,7 +89,8 @@ impl InputError {
                 ModelError::Dangling { owner, .. }
                 | ModelError::WrongKind { owner, .. }
                 | ModelError::MissingField { owner, .. }
-                | ModelError::NonFinite { owner, .. } => match owner {
+                | ModelError::NonFinite { owner, .. }
+                | ModelError::OutOfRange { owner, .. } => match owner {
                     ObjectId::Constraint(c) => Some(c.0),
                     _ => None,
                 },

@@ -101,7 +101,8 @@ fn model_object(e: &ModelError) -> Option<String> {
         ModelError::Dangling { owner, .. }
         | ModelError::WrongKind { owner, .. }
         | ModelError::MissingField { owner, .. }
-        | ModelError::NonFinite { owner, .. } => owner.to_string(),
+        | ModelError::NonFinite { owner, .. }
+        | ModelError::OutOfRange { owner, .. } => owner.to_string(),
         ModelError::NeedsWorkplane { constraint, .. } => constraint.to_string(),
         ModelError::Cycle { entity } => entity.to_string(),
         _ => return None,

@@ -75,6 +75,19 @@ pub enum ModelError {
         /// The value.
         value: f64,
     },
+    /// A finite number too large to solve with: beyond [`crate::MAX_MAGNITUDE`], the squares
+    /// and products the equations take of it overflow.
+    #[error(
+        "{owner}: {field} is {value:e}, beyond 1e100 in size, the largest number loci solves with"
+    )]
+    OutOfRange {
+        /// The object.
+        owner: ObjectId,
+        /// The field.
+        field: &'static str,
+        /// The value.
+        value: f64,
+    },
     /// A constraint that only applies in a workplane has none.
     #[error("{constraint} ({kind}) must be given a workplane; it cannot be free in 3D")]
     NeedsWorkplane {

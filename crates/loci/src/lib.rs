@@ -51,5 +51,6 @@ pub use error::{ModelError, SolveError};
 pub use model::{
     Constraint, ConstraintId, ConstraintKind, ConstraintMut, Entity, EntityId, EntityKind,
     EntityType, GroupId, ObjectId, Param, ParamId, PlaneRule, Signature, System, Want, FIELD_NAMES,
+    MAX_MAGNITUDE,
 };
 pub use solve::{solve, Config, Outcome, Report, Solver};

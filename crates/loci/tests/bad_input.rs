@@ -366,6 +366,54 @@ fn non_finite_values_set_after_adding_are_caught_by_the_solve() {
 }
 
 #[test]
+fn values_too_large_to_solve_with_are_rejected() {
+    // A point 1e160 from another: the distance's square overflowed to infinity, and the
+    // solve read `inconsistent`, naming the distance.
+    let mut sys = System::new();
+    for v in [1e160, -1e101, f64::MAX] {
+        let err = sys.add_param(Param::new(7, 1, v)).unwrap_err();
+        assert_eq!(
+            err,
+            ModelError::OutOfRange {
+                owner: ObjectId::Param(ParamId(7)),
+                field: "val",
+                value: v
+            }
+        );
+        let err = sys
+            .add_constraint(Constraint::new(3, 1, K::PtPtDistance).with_val(v))
+            .unwrap_err();
+        assert!(
+            matches!(err, ModelError::OutOfRange { owner, field: "val", .. } if owner == c_id(3)),
+            "{err:?}"
+        );
+    }
+    assert!(sys.params().is_empty() && sys.constraints().is_empty());
+    assert!(sys
+        .add_param(Param::new(7, 1, -loci::MAX_MAGNITUDE))
+        .is_ok());
+
+    // Set in place, caught by the solve; and up to the limit, solved.
+    let mut s = base();
+    s.on_points(2, K::PtPtDistance, 301, 302, 5.0);
+    assert!(s.sys.set_value(1000.into(), 1e160));
+    solve_err(
+        s.sys,
+        ModelError::OutOfRange {
+            owner: ObjectId::Param(ParamId(1000)),
+            field: "val",
+            value: 1e160,
+        },
+    );
+    let mut s = base();
+    s.on_points(2, K::PtPtDistance, 301, 302, 5.0);
+    assert!(s.sys.set_value(1000.into(), 1e100));
+    let r = s.sys.solve_group(2).unwrap();
+    assert!(r.outcome.is_ok(), "{r:?}");
+    assert!(s.sys.params().iter().all(|p| p.val.is_finite()));
+}
+
+#[test]
 fn two_d_only_constraints_need_a_workplane() {
     let mut s = base();
     let r = s.param(2, 4.0);

@@ -127,14 +127,14 @@ impl Ctx<'_> {
     }
 
     fn value(&self, v: f64, nonneg: bool) -> Result<f64, AssemblyError> {
-        if !v.is_finite() || (nonneg && v < 0.0) {
+        if !(v.is_finite() && v.abs() <= crate::MAX_MAGNITUDE) || (nonneg && v < 0.0) {
             return Err(AssemblyError::BadValue {
                 mate: self.mate.into(),
                 value: v,
                 expected: if nonneg {
-                    "a finite distance, zero or more"
+                    "a finite distance, zero or more, of size at most 1e100"
                 } else {
-                    "a finite number"
+                    "a finite number of size at most 1e100"
                 },
             });
         }

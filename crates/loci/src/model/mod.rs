@@ -14,3 +14,4 @@ pub use entity::{Entity, EntityKind, EntityType};
 pub use handle::{ConstraintId, EntityId, GroupId, ObjectId, ParamId};
 pub use param::Param;
 pub use system::{ConstraintMut, System};
+pub use validate::MAX_MAGNITUDE;

@@ -110,13 +110,7 @@ impl System {
                 object: ObjectId::Param(p.h),
             });
         }
-        if !p.val.is_finite() {
-            return Err(ModelError::NonFinite {
-                owner: ObjectId::Param(p.h),
-                field: "val",
-                value: p.val,
-            });
-        }
+        super::validate::usable(ObjectId::Param(p.h), "val", p.val)?;
         self.param_ix.insert(p.h.0, self.params.len());
         self.params.push(p);
         self.touch();
@@ -238,13 +232,7 @@ impl System {
                 object: ObjectId::Constraint(c.h),
             });
         }
-        if !c.val.is_finite() {
-            return Err(ModelError::NonFinite {
-                owner: ObjectId::Constraint(c.h),
-                field: "val",
-                value: c.val,
-            });
-        }
+        super::validate::usable(ObjectId::Constraint(c.h), "val", c.val)?;
         let h = c.h;
         self.constraint_ix.insert(h.0, self.constraints.len());
         self.constraints.push(c);

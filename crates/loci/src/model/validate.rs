@@ -5,6 +5,13 @@ use super::{
 };
 use crate::error::ModelError;
 
+/// The largest size of a number in a model (a parameter's value, a constraint's dimension, a
+/// constant an entity carries). The equations square and multiply coordinates: a distance
+/// between points 1e160 apart overflows to infinity, and a solve read that as a conflict.
+/// Far beyond any drawing (1e100 metres is some 1e74 times the observable universe), with the
+/// cube of a value still finite.
+pub const MAX_MAGNITUDE: f64 = 1e100;
+
 impl System {
     /// Checks every value and reference in the model: parameter and constraint values are
     /// finite, parameters and entities exist, each has the type its field needs, 2D entities
@@ -27,22 +34,10 @@ impl System {
         // `add_param` rejects non-finite values, but `set_value` and `values_mut` can still
         // store one, and a NaN would silently poison every equation that reads it.
         for p in self.params() {
-            if !p.val.is_finite() {
-                return Err(ModelError::NonFinite {
-                    owner: ObjectId::Param(p.h),
-                    field: "val",
-                    value: p.val,
-                });
-            }
+            usable(ObjectId::Param(p.h), "val", p.val)?;
         }
         for c in self.constraints() {
-            if !c.val.is_finite() {
-                return Err(ModelError::NonFinite {
-                    owner: ObjectId::Constraint(c.h),
-                    field: "val",
-                    value: c.val,
-                });
-            }
+            usable(ObjectId::Constraint(c.h), "val", c.val)?;
         }
         Ok(())
     }
@@ -237,13 +232,7 @@ impl System {
 
     fn validate_constraint(&self, c: &Constraint) -> Result<(), ModelError> {
         let owner = ObjectId::Constraint(c.h);
-        if !c.val.is_finite() {
-            return Err(ModelError::NonFinite {
-                owner,
-                field: "val",
-                value: c.val,
-            });
-        }
+        usable(owner, "val", c.val)?;
         let sig = c.kind.signature();
         match (sig.plane, c.workplane) {
             (PlaneRule::Required, None) => {
@@ -288,14 +277,26 @@ impl System {
     }
 }
 
-/// A constant an entity carries (a moved copy's base) must be a finite number.
+/// A constant an entity carries (a moved copy's base) must be a number loci solves with.
 fn finite(owner: ObjectId, field: &'static str, vals: &[f64]) -> Result<(), ModelError> {
-    match vals.iter().find(|v| !v.is_finite()) {
-        Some(&value) => Err(ModelError::NonFinite {
+    vals.iter().try_for_each(|&v| usable(owner, field, v))
+}
+
+/// `value` of `owner`'s `field` is a finite number of size at most [`MAX_MAGNITUDE`].
+pub(super) fn usable(owner: ObjectId, field: &'static str, value: f64) -> Result<(), ModelError> {
+    if !value.is_finite() {
+        Err(ModelError::NonFinite {
             owner,
             field,
             value,
-        }),
-        None => Ok(()),
+        })
+    } else if value.abs() > MAX_MAGNITUDE {
+        Err(ModelError::OutOfRange {
+            owner,
+            field,
+            value,
+        })
+    } else {
+        Ok(())
     }
 }

@@ -366,8 +366,8 @@ fn check_value<R>(spec: &Spec<R>) -> Result<(), SketchError> {
             expected,
         })
     };
-    if !v.is_finite() {
-        return bad("a finite number");
+    if !(v.is_finite() && v.abs() <= crate::MAX_MAGNITUDE) {
+        return bad("a finite number of size at most 1e100");
     }
     match spec {
         Spec::Length { .. } | Spec::Distance { .. } if v < 0.0 => bad("a distance of 0 or more"),

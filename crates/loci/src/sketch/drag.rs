@@ -293,11 +293,11 @@ impl Drag<'_> {
     /// A target that is not finite, or a solver that cannot start.
     pub fn step(&mut self, target: [f64; 2]) -> Result<DragStep, SketchError> {
         for v in target {
-            if !v.is_finite() {
+            if !(v.is_finite() && v.abs() <= crate::MAX_MAGNITUDE) {
                 return Err(SketchError::BadValue {
                     what: "drag target",
                     value: v,
-                    expected: "a finite number",
+                    expected: "a finite number of size at most 1e100",
                 });
             }
         }

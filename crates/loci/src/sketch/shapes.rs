@@ -98,13 +98,13 @@ pub struct Removed {
 }
 
 fn finite(what: &'static str, v: f64) -> Result<f64, SketchError> {
-    if v.is_finite() {
+    if v.is_finite() && v.abs() <= crate::MAX_MAGNITUDE {
         Ok(v)
     } else {
         Err(SketchError::BadValue {
             what,
             value: v,
-            expected: "a finite number",
+            expected: "a finite number of size at most 1e100",
         })
     }
 }

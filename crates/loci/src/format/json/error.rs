@@ -303,6 +303,18 @@ pub(super) fn model_parts(e: &ModelError) -> (Owner, String, String) {
             (*field).into(),
             format!("field \"{field}\": {value} is not a finite number"),
         ),
+        ModelError::OutOfRange {
+            owner,
+            field,
+            value,
+        } => (
+            o(*owner),
+            (*field).into(),
+            format!(
+                "field \"{field}\": {value:e} is beyond 1e100 in size, the largest number loci \
+                 solves with"
+            ),
+        ),
         ModelError::NeedsWorkplane { constraint, kind } => (
             o(ObjectId::Constraint(*constraint)),
             "workplane".into(),

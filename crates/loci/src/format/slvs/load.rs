@@ -170,7 +170,8 @@ pub(crate) fn build(
             crate::ModelError::Dangling { owner, field, .. }
             | crate::ModelError::WrongKind { owner, field, .. }
             | crate::ModelError::MissingField { owner, field, .. }
-            | crate::ModelError::NonFinite { owner, field, .. } => b.field_line(owner, field),
+            | crate::ModelError::NonFinite { owner, field, .. }
+            | crate::ModelError::OutOfRange { owner, field, .. } => b.field_line(owner, field),
             crate::ModelError::NeedsWorkplane { constraint, .. } => {
                 b.line_of(ObjectId::Constraint(constraint))
             }

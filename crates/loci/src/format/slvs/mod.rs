@@ -390,6 +390,15 @@ pub fn model_message(e: &ModelError) -> String {
             object_name(*owner),
             file_key(*owner, field).unwrap_or(field)
         ),
+        ModelError::OutOfRange {
+            owner,
+            field,
+            value,
+        } => format!(
+            "{}: {} is {value:e}, beyond 1e100 in size, the largest number loci solves with",
+            object_name(*owner),
+            file_key(*owner, field).unwrap_or(field)
+        ),
         ModelError::NeedsWorkplane { constraint, kind } => format!(
             "{} ({kind}) has no Constraint.workplane.v; it applies only in a workplane",
             object_name(ObjectId::Constraint(*constraint))
