@@ -8,14 +8,14 @@ use crate::error::ModelError;
 /// The largest size of a number in a model (a parameter's value, a constraint's dimension, a
 /// constant an entity carries). The equations square and multiply coordinates: a distance
 /// between points 1e160 apart overflows to infinity, and a solve read that as a conflict.
-/// Far beyond any drawing (1e100 metres is some 1e74 times the observable universe), with the
-/// cube of a value still finite.
+/// Far beyond any drawing, with the cube of a value still finite.
 pub const MAX_MAGNITUDE: f64 = 1e100;
 
 impl System {
     /// Checks every value and reference in the model: parameter and constraint values are
-    /// finite, parameters and entities exist, each has the type its field needs, 2D entities
-    /// name a workplane, and constraints have the fields their type uses.
+    /// finite and at most [`MAX_MAGNITUDE`] in size, parameters and entities exist, each has
+    /// the type its field needs, a line joins two different points, 2D entities name a
+    /// workplane, and constraints have the fields their type uses.
     ///
     /// # Errors
     /// The first problem found, naming the object and field.
@@ -26,7 +26,7 @@ impl System {
     }
 
     /// The part of [`System::validate`] that value edits can break: every parameter value and
-    /// constraint dimension is a finite number.
+    /// constraint dimension is a finite number of size at most [`MAX_MAGNITUDE`].
     ///
     /// # Errors
     /// The first non-finite value, naming its object.
