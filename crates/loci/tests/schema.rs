@@ -198,9 +198,22 @@ fn schema_rejects_what_loci_rejects() {
             "bad tolerance",
             bad(&|x| x["solve"]["options"] = json!({"tolerance": 0})),
         ),
+        (
+            "a value beyond 1e100",
+            bad(&|x| x["params"][7]["val"] = json!(-1e101)),
+        ),
+        (
+            "a dimension beyond 1e100",
+            bad(&|x| x["constraints"][2]["val"] = json!(1e160)),
+        ),
     ];
     for (what, instance) in cases {
         assert!(!v.is_valid(&instance), "the schema accepts: {what}");
+        // And loci rejects it too, where the file is well-formed JSON of its shape.
+        if what.contains("1e100") {
+            let text = instance.to_string();
+            assert!(Problem::from_json(&text).is_err(), "loci accepts: {what}");
+        }
     }
     // A horizontal given as two points is fine.
     let ok = bad(&|x| {
