@@ -25,6 +25,7 @@ pub(crate) mod rank;
 mod rank_tests;
 mod report;
 mod rescue;
+mod runaway;
 #[cfg(test)]
 mod slide_tests;
 mod substitute;
@@ -459,7 +460,7 @@ fn solve_values(
         work.push((comp, x));
         rest = tail;
     }
-    let finishes: Vec<newton::Finish> = if parallel {
+    let mut finishes: Vec<newton::Finish> = if parallel {
         par::map_items(
             work,
             true,
@@ -473,6 +474,15 @@ fn solve_values(
             .map(|(comp, x)| comp.solve(kernels, x, &values, cfg, scratch))
             .collect()
     };
+    runaway::reject_runaways(
+        &cache.components,
+        &mut finishes,
+        &x_grouped,
+        &comps.cols,
+        &x_all,
+        &values,
+        kernels,
+    );
     cache.settled = finishes.iter().any(|f| f.settled);
     if let Some(ci) = finishes.iter().position(|f| f.too_large) {
         let comp = &cache.components[ci];
