@@ -16,6 +16,12 @@ use std::collections::HashMap;
 /// The largest residual an answer may leave.
 pub const TOLERANCE: f64 = 1e-6;
 
+/// How many times the system's scale a parameter may reach in an answer. Parallel and
+/// perpendicular are judged by sines and cosines, and two lines that meet can be parallel to
+/// within any sine once their corner runs off towards infinity: such an answer holds nothing
+/// in the sense meant, however small its residuals.
+pub const FAR: f64 = 1e4;
+
 /// Parameter values by handle.
 pub type Values = HashMap<ParamId, f64>;
 
@@ -302,6 +308,12 @@ pub fn violations(sys: &System, v: &Values, size: f64) -> Vec<(String, f64)> {
             out.push((what, worst));
         }
     };
+    for p in sys.params() {
+        let x = g.val(p.h);
+        if p.group.0 == GROUP && x.abs() > FAR * size {
+            out.push((format!("param {} ran off to {x:e}", p.h.0), x.abs() / size));
+        }
+    }
     for c in sys.constraints() {
         if c.group.0 != GROUP {
             continue;

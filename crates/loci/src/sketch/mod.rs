@@ -27,6 +27,7 @@
 
 mod bars;
 mod calls;
+mod conflict_check;
 mod constraints;
 mod drag;
 mod error;

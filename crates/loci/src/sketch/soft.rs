@@ -249,12 +249,19 @@ impl Sketch {
     }
 
     /// Solves the sketch with its soft constraints (see the module's notes). Parameter values
-    /// change only when every user constraint holds.
+    /// change only when every user constraint holds. A conflict is named only when its
+    /// constraints fail in a sketch of their own too (see [`Sketch::recheck_conflict`]).
     ///
     /// # Errors
     /// The solver could not start (a bad setting in [`Sketch::set_config`]). No soft
     /// constraint is left in the system then either.
     pub fn solve(&mut self) -> Result<SketchReport, SketchError> {
+        let first = self.solve_soft()?;
+        self.recheck_conflict(first)
+    }
+
+    /// [`Sketch::solve`] without the check of a conflict it names.
+    pub(super) fn solve_soft(&mut self) -> Result<SketchReport, SketchError> {
         if self.shapes.is_empty() {
             return Ok(SketchReport {
                 outcome: Outcome::Okay,

@@ -25,7 +25,10 @@
 //! `LOCI_RANDOM_SKETCHES=N` solves N sketches (150 by default, and the [`PINNED`] seeds), from
 //! `LOCI_RANDOM_FIRST_SKETCH`; `LOCI_RANDOM_SKETCH_NUDGE=D` moves the free points by up to D
 //! (0.05 by default; from further off only wrong answers count, not a solve that gives up);
-//! `LOCI_RANDOM_SKETCH_VERBOSE=1` prints each one's constraints and outcomes.
+//! `LOCI_RANDOM_SKETCH_VERBOSE=1` prints each one's constraints and outcomes;
+//! `LOCI_RANDOM_SKETCH_DUMP=DIR` writes each sketch as a sketch file, `DIR/seed-N.json` as
+//! moved off before its first solve and `DIR/seed-N-changed.json` with its dimension changed,
+//! for `loci solve` and `loci check`.
 
 #[path = "../common/mod.rs"]
 mod common;
@@ -33,6 +36,7 @@ mod drawing;
 
 use common::rng::Rng;
 use drawing::{dist, drawing, far_off};
+use loci::format::sketch::SketchFile;
 use loci::sketch::{PointId, Sketch, SketchConstraintId, SketchReport, Soft, Spec};
 use loci::Outcome;
 
@@ -225,6 +229,16 @@ fn dragged(
     found
 }
 
+/// Writes `s` to `LOCI_RANDOM_SKETCH_DUMP/seed-{name}.json` when that is set.
+fn dump(s: &Sketch, name: &str) {
+    if let Ok(dir) = std::env::var("LOCI_RANDOM_SKETCH_DUMP") {
+        let path = std::path::Path::new(&dir).join(format!("seed-{name}.json"));
+        let text = SketchFile::from_sketch(s, |_| None).to_json();
+        std::fs::create_dir_all(&dir).expect("a directory to write to");
+        std::fs::write(&path, text).expect("a file to write to");
+    }
+}
+
 /// Runs one seed; the findings, if any.
 fn run(seed: u64, nudge: f64, verbose: bool) -> Vec<String> {
     let (mut s, ids, points) = drawing(seed);
@@ -263,6 +277,7 @@ fn run(seed: u64, nudge: f64, verbose: bool) -> Vec<String> {
             .expect("a point of the sketch");
         }
     }
+    dump(&s, &seed.to_string());
     // From further off than the default, a sketch may fold onto another branch that cannot
     // close, and Newton may say so: only wrong answers count there.
     let (r, f) = check_solve(&mut s, &ids, &points, nudge <= NUDGE);
@@ -315,6 +330,7 @@ fn run(seed: u64, nudge: f64, verbose: bool) -> Vec<String> {
         .expect("a dimension");
     let changed = far_off(s.constraint(id).map_or("?", |c| c.0.name()), v);
     s.set_value(id, changed).expect("a dimension takes a value");
+    dump(&s, &format!("{seed}-changed"));
     let (r, f) = check_solve(&mut s, &ids, &points, false);
     let f: Vec<String> = f
         .into_iter()
@@ -353,8 +369,10 @@ fn run(seed: u64, nudge: f64, verbose: bool) -> Vec<String> {
 /// place); 1,274, a circle whose radius went negative in the first solve; 105, a dimension
 /// changed and a circle's radius taken through zero (`okay`, the circle drawn at a negative
 /// radius); 1,169, a circle's radius taken through zero by a drag step; 8,300, a satisfiable
-/// set named in a conflict, its solution past a fold that the first scattered starts missed.
-const PINNED: [u64; 5] = [742, 1274, 105, 1169, 8300];
+/// set named in a conflict, its solution past a fold that the first scattered starts missed;
+/// 31,931, a conflict named without the lock it needed, its other members solving alone with
+/// the drawing scaled 60 times over.
+const PINNED: [u64; 6] = [742, 1274, 105, 1169, 8300, 31_931];
 
 /// Seeds that found a wrong answer from further off, with how far: 20,859, a hexagon whose
 /// four sides are held parallel, solved by sending their shared corner to (-7.7e8, -2.7e8),

@@ -1,0 +1,68 @@
+//! A conflict named by a sketch solve is checked the way a user would check it: its
+//! constraints alone, in a sketch of their own with the soft constraints every solve adds.
+//!
+//! The core checks a set before naming it by solving the set alone from the drawing and from
+//! starts scattered about it. Without the soft constraints that keep the other lines' lengths,
+//! a set that holds only once the drawing is scaled many times over passes that check: a
+//! right triangle whose hypotenuse must make 89.4 degrees with one leg while a circle of
+//! radius 1.4 touches one end of that leg and its centre stays 6.1 from the other. Only a
+//! locked length on the hypotenuse made it impossible, and the lock was left out of the named
+//! set (random sketch 31,931). Alone, with the soft constraints, the set solves with the
+//! triangle 60 times its size. The whole sketch then starts again from there, where the set
+//! holds and Newton meets what truly stands in the way.
+
+use super::{Sketch, SketchError, SketchReport};
+use crate::solve::Outcome;
+
+/// How many times a named set that holds alone sends the solve to start again from where the
+/// set holds.
+const RESTARTS: usize = 2;
+
+impl Sketch {
+    /// `first`, the report of [`Sketch::solve_soft`], or, when the conflict it names holds in a
+    /// sketch of its own, the report of the sketch solved again from where the set holds:
+    /// a solution, or a conflict named from there. The drawing is left as it was unless a
+    /// solve succeeds. Only with failure checks on ([`crate::Config::with_failure_checks`]).
+    pub(super) fn recheck_conflict(
+        &mut self,
+        first: SketchReport,
+    ) -> Result<SketchReport, SketchError> {
+        let mut r = first;
+        if !self.cfg.name_conflicts {
+            return Ok(r);
+        }
+        for _ in 0..RESTARTS {
+            if r.outcome != Outcome::Inconsistent || r.failed.is_empty() {
+                return Ok(r);
+            }
+            let mut alone = self.clone();
+            for &id in self.constraints.keys() {
+                if !r.failed.contains(&id) {
+                    alone.remove_constraint(id)?;
+                }
+            }
+            if !alone.solve_soft()?.outcome.is_ok() {
+                return Ok(r);
+            }
+            let at: Vec<f64> = self
+                .sys
+                .params()
+                .iter()
+                .map(|p| alone.sys.param(p.h).map_or(p.val, |q| q.val))
+                .collect();
+            let drawn: Vec<f64> = self.sys.params().iter().map(|p| p.val).collect();
+            for (v, a) in self.sys.values_mut().zip(at) {
+                *v = a;
+            }
+            let again = self.solve_soft()?;
+            if again.outcome.is_ok() {
+                return Ok(again);
+            }
+            for (v, d) in self.sys.values_mut().zip(drawn) {
+                *v = d;
+            }
+            r = again;
+        }
+        Ok(r)
+    }
+}

@@ -1,0 +1,79 @@
+//! A conflict a sketch solve names fails in a sketch of its own, and each of its members is
+//! needed: without any one of them, the rest solve. Checked as a user would, by removing
+//! every other constraint and solving what is left.
+
+use loci::format::sketch::SketchFile;
+use loci::sketch::{Sketch, SketchConstraintId};
+use loci::Outcome;
+use std::path::Path;
+
+fn load(name: &str) -> Sketch {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data")
+        .join(name);
+    let text = std::fs::read_to_string(path).unwrap();
+    SketchFile::from_json(&text).unwrap().load().unwrap().sketch
+}
+
+/// `s` with only the constraints `keep`.
+fn only(s: &Sketch, keep: &[SketchConstraintId]) -> Sketch {
+    let mut part = s.clone();
+    let all: Vec<SketchConstraintId> = s.constraints().map(|(id, _)| id).collect();
+    for id in all {
+        if !keep.contains(&id) {
+            part.remove_constraint(id).unwrap();
+        }
+    }
+    part
+}
+
+/// Random sketch 31,931 with its angle changed to -90.63 degrees: a right triangle whose
+/// hypotenuse is locked at its length, a circle of fixed diameter through one end of a leg
+/// with its centre at a distance from the other. Without the lock the triangle can grow until
+/// the circle fits (alone, those constraints solve with it 60 times its size); the named set
+/// once left the lock out.
+#[test]
+fn a_conflict_that_needs_a_lock_names_the_lock() {
+    let mut s = load("sketch_conflict_with_its_lock.json");
+    let drawn = s.clone();
+    let r = s.solve().unwrap();
+    assert_eq!(r.outcome, Outcome::Inconsistent);
+    let names: Vec<&str> = r
+        .failed
+        .iter()
+        .map(|&id| s.constraint(id).unwrap().0.name())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "perpendicular",
+            "point_on_circle",
+            "diameter",
+            "angle",
+            "distance",
+            "lock"
+        ]
+    );
+    // Left where it was drawn.
+    for (id, _) in drawn.shapes() {
+        if let Some(p) = drawn.as_point(id) {
+            assert_eq!(s.point(p), drawn.point(p));
+        }
+    }
+    let alone = only(&drawn, &r.failed).solve().unwrap();
+    assert_eq!(alone.outcome, Outcome::Inconsistent);
+    for &left_out in &r.failed {
+        let rest: Vec<SketchConstraintId> = r
+            .failed
+            .iter()
+            .copied()
+            .filter(|&c| c != left_out)
+            .collect();
+        let mut part = only(&drawn, &rest);
+        let without = part.solve().unwrap();
+        assert!(without.outcome.is_ok(), "without {left_out:?}: {without:?}");
+        for &id in &rest {
+            assert!(part.measure(id).unwrap().residual < 1e-8);
+        }
+    }
+}
