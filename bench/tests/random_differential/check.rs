@@ -295,6 +295,12 @@ pub fn violations(sys: &System, v: &Values, size: f64) -> Vec<(String, f64)> {
         tiny: 1e-9 * size,
     };
     let mut out = Vec::new();
+    for p in sys.params() {
+        let x = g.val(p.h);
+        if p.group.0 == GROUP && x.abs() > FAR * size {
+            out.push((format!("param {} ran off to {x:e}", p.h.0), x.abs() / size));
+        }
+    }
     let mut judge = |what: String, lengths: &[f64], unitless: &[f64]| {
         let worst = lengths
             .iter()
@@ -308,12 +314,6 @@ pub fn violations(sys: &System, v: &Values, size: f64) -> Vec<(String, f64)> {
             out.push((what, worst));
         }
     };
-    for p in sys.params() {
-        let x = g.val(p.h);
-        if p.group.0 == GROUP && x.abs() > FAR * size {
-            out.push((format!("param {} ran off to {x:e}", p.h.0), x.abs() / size));
-        }
-    }
     for c in sys.constraints() {
         if c.group.0 != GROUP {
             continue;

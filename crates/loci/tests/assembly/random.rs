@@ -710,7 +710,7 @@ const FAR: f64 = 1e4;
 
 /// How far an answer `places` misses `cases`: the largest residual, or infinity when a part
 /// ran off beyond [`FAR`].
-fn miss(cases: &[Case], places: &[Place]) -> f64 {
+fn missed_by(cases: &[Case], places: &[Place]) -> f64 {
     if places.iter().any(|p| !(norm(p.t) <= FAR)) {
         return f64::INFINITY;
     }
@@ -779,7 +779,7 @@ fn far_start_check(
         }
         _ => {
             seen.far_solved += 1;
-            let miss = miss(&b.cases, &places_of(&rf));
+            let miss = missed_by(&b.cases, &places_of(&rf));
             if miss > 1e-8 {
                 wrong.push(format!(
                     "seed {seed}: from a far start, solved, but a relation misses by {miss:e}: {rf}"
@@ -802,7 +802,7 @@ fn solves(b: &Built, cases: &[Case], start: &[Pose]) -> bool {
     let Ok(r) = asm.solve() else {
         return false;
     };
-    r.outcome.is_ok() && miss(cases, &places_of(&r)) < 1e-8
+    r.outcome.is_ok() && missed_by(cases, &places_of(&r)) < 1e-8
 }
 
 /// What one case found wrong, if anything; counts what it saw into `seen`.
@@ -868,7 +868,7 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool) -> Vec<String> {
             ));
         }
     }
-    let miss = miss(&b.cases, &got);
+    let miss = missed_by(&b.cases, &got);
     if miss > 1e-8 {
         wrong.push(format!(
             "seed {seed}: solved, but a relation misses by {miss:e}: {r}"
@@ -940,7 +940,7 @@ fn run(seed: u64, seen: &mut Seen, verbose: bool) -> Vec<String> {
     match r.outcome {
         Outcome::Okay | Outcome::RedundantOkay => {
             seen.longer_solved += 1;
-            let miss = miss(&b2.cases, &places_of(&r));
+            let miss = missed_by(&b2.cases, &places_of(&r));
             if miss > 1e-8 {
                 wrong.push(format!(
                     "seed {seed}: lengthened, solved, but a relation misses by {miss:e}: {r}"
