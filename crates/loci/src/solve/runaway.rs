@@ -18,7 +18,7 @@ use crate::equations::Kernel;
 /// sine passes the offset that cannot close: for offsets of 1e-3 or more of the drawing's
 /// size, beyond 1e7 of its size. Real answers lie within the drawing's coordinates and
 /// dimensions, save where two lines within a millionth of a radian of each other must meet.
-pub(crate) const RUNAWAY: f64 = 1e6;
+const RUNAWAY: f64 = 1e6;
 
 /// The size of the drawing: the largest value of any parameter at the start or of any
 /// constraint's dimension, and at least 1.

@@ -49,11 +49,11 @@ const STILL: f64 = 1e-9;
 /// How far every free point is moved off the drawing before the first solve.
 const NUDGE: f64 = 0.05;
 
-/// How many times the drawing's size (its farthest coordinate or largest dimension, at least
-/// 1) a point may end from where it was. Parallel and perpendicular are judged by the sine
-/// and cosine of an angle, and two sides that meet can be parallel to within any sine when
-/// their corner runs off towards infinity; such a placement holds no constraint in the sense
-/// meant, however small its residuals.
+/// How many times the drawing's size a point may end from where it was, the size being the
+/// farthest coordinate or the largest dimension, and at least one. Parallel and perpendicular
+/// are judged by the sine and cosine of an angle, and two sides that meet can be parallel to
+/// within any sine when their corner runs off towards infinity; such a placement holds no
+/// constraint in the sense meant, however small its residuals.
 const FAR: f64 = 1e4;
 
 /// What a soft constraint keeps, read from the drawing.
