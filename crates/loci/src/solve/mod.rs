@@ -479,8 +479,8 @@ fn solve_values(
         &mut finishes,
         &x_grouped,
         &comps.cols,
-        &x_all,
-        &values,
+        &|c| params[col_root[c]].val,
+        params,
         kernels,
     );
     cache.settled = finishes.iter().any(|f| f.settled);

@@ -11,7 +11,8 @@
 //! rows on those unknowns unsatisfied, so the rescues and the conflict search go on from there.
 
 use super::newton::{Component, Finish};
-use crate::equations::Kernel;
+use crate::equations::{EqKind, Kernel};
+use crate::model::Param;
 
 /// How many times the size of the drawing ([`drawing_size`]) an unknown may move in one
 /// solve. A root at infinity is reached when the distance times the tolerance on an angle's
@@ -21,28 +22,55 @@ use crate::equations::Kernel;
 const RUNAWAY: f64 = 1e6;
 
 /// The size of the drawing: the largest value of any parameter at the start or of any
-/// constraint's dimension, and at least 1.
-fn drawing_size(values: &[f64], kernels: &[Kernel]) -> f64 {
-    let params = values.iter().map(|v| v.abs());
-    let dims = kernels.iter().map(|k| k.eq.val.abs());
+/// dimension that is a length, and at least 1. An angle's degrees are no size: with a
+/// 147-degree angle counted, a pair of 3D lines of a drawing of size 10 ran off to 5.5e7 and
+/// was read as solved.
+fn drawing_size(params: &[Param], kernels: &[Kernel]) -> f64 {
+    let params = params.iter().map(|p| p.val.abs());
+    let dims = kernels
+        .iter()
+        .filter(|k| is_length(&k.eq.kind))
+        .map(|k| k.eq.val.abs());
     params
         .chain(dims)
         .filter(|v| v.is_finite())
         .fold(1.0, f64::max)
 }
 
+/// Whether an equation's `val` is a length (a distance, a diameter, a difference of lengths),
+/// not an angle, a ratio or a count.
+fn is_length(kind: &EqKind) -> bool {
+    use crate::model::ConstraintKind as K;
+    matches!(
+        kind,
+        EqKind::Constraint(
+            K::PtPtDistance
+                | K::PtPlaneDistance
+                | K::PtLineDistance
+                | K::PtFaceDistance
+                | K::ProjPtDistance
+                | K::Diameter
+                | K::LengthDifference
+                | K::ArcArcDifference
+                | K::ArcLineDifference
+        )
+    )
+}
+
 /// Marks every converged component whose unknowns `x` (one slice per component, in order;
-/// component unknown `i` overall is column `cols[i]`) moved from their start (`start`, by
-/// column) by more than [`RUNAWAY`] times the drawing's size as not converged, with
-/// the rows on the unknowns that ran off unsatisfied. Nothing is computed beyond one pass over
-/// the unknowns unless one of them moved more than [`RUNAWAY`].
+/// component unknown `i` overall is column `cols[i]`) are more than [`RUNAWAY`] times the
+/// drawing's size from where the drawing has them (`drawn`, by column), as not converged, with
+/// the rows on the unknowns that ran off unsatisfied. Measured from the drawing, not from the
+/// start of this solve: a rescue that starts further off must not carry a placement that ran
+/// off back as an answer. `params` are the drawing's parameters, for its size. Nothing is
+/// computed beyond one pass over the unknowns unless one of them is more than [`RUNAWAY`] off.
 pub(super) fn reject_runaways(
     components: &[Component],
     finishes: &mut [Finish],
     x: &[f64],
     cols: &[usize],
-    start: &[f64],
-    values: &[f64],
+    drawn: &dyn Fn(usize) -> f64,
+    params: &[Param],
     kernels: &[Kernel],
 ) {
     let mut size: Option<f64> = None;
@@ -51,14 +79,14 @@ pub(super) fn reject_runaways(
         let n = comp.scale.len();
         let (x, cols) = (&x[at..at + n], &cols[at..at + n]);
         at += n;
-        let moved = |i: usize| (x[i] - start[cols[i]]).abs();
-        if !fin.converged || (0..n).all(|i| moved(i) <= RUNAWAY) {
+        let off = |i: usize| (x[i] - drawn(cols[i])).abs();
+        if !fin.converged || (0..n).all(|i| off(i) <= RUNAWAY) {
             continue;
         }
-        let bound = RUNAWAY * *size.get_or_insert_with(|| drawing_size(values, kernels));
+        let bound = RUNAWAY * *size.get_or_insert_with(|| drawing_size(params, kernels));
         let mut rows: Vec<usize> = (0..n)
-            .filter(|&i| moved(i) > bound)
-            .flat_map(|c| comp.columns.col(c).iter().map(|&(r, _)| r as usize))
+            .filter(|&i| off(i) > bound)
+            .flat_map(|i| comp.columns.col(i).iter().map(|&(r, _)| r as usize))
             .collect();
         if rows.is_empty() {
             continue;
