@@ -15,7 +15,7 @@ pub enum Outcome {
     /// Some constraints cannot hold together (listed in `failed`).
     Inconsistent,
     /// No solution was found, and no conflict was proven (unsatisfied constraints in `failed`).
-    /// A placement reached only by sending points more than a million times the drawing's
+    /// A placement reached only by sending points more than ten thousand times the drawing's
     /// size away (where parallel lines that must meet appear to) counts as none: those
     /// constraints are named.
     DidNotConverge,
