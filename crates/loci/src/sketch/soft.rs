@@ -250,7 +250,8 @@ impl Sketch {
 
     /// Solves the sketch with its soft constraints (see the module's notes). Parameter values
     /// change only when every user constraint holds. A conflict is named only when its
-    /// constraints fail in a sketch of their own too (see [`Sketch::recheck_conflict`]).
+    /// constraints fail in a sketch of their own too; where they hold, the sketch is solved
+    /// again from there.
     ///
     /// # Errors
     /// The solver could not start (a bad setting in [`Sketch::set_config`]). No soft
