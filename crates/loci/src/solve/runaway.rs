@@ -24,7 +24,7 @@ const RUNAWAY: f64 = 1e4;
 
 /// The size of the drawing: the largest value of any parameter at the start or of any
 /// dimension that is a length, and at least 1. An angle's degrees are no size: with a
-/// 147-degree angle counted, a pair of 3D lines of a drawing of size 10 ran off to 5.5e7 and
+/// 147-degree angle counted, a pair of 3D lines of a drawing of size 16 ran off to 5.5e7 and
 /// was read as solved.
 fn drawing_size(params: &[Param], kernels: &[Kernel]) -> f64 {
     let params = params.iter().map(|p| p.val.abs());
