@@ -290,16 +290,20 @@ fn drag_one(seed: u64) -> Result<Dragged, String> {
             }
         }
         // Every hinge (two bars meeting at a point) keeps the sense in which it bends, unless
-        // it passes through straight, in short pieces: in a step taken whole, a sense that
-        // changes by more than `BENT` is a jump to the linkage's other branch. How far the
-        // points moved against how far the cursor did is only measured: near the centre of
-        // its reach an arm swings round fast as the cursor passes, without changing branch.
+        // it passes through straight, in short pieces: in a step taken whole (one solve), a
+        // sense that changes by more than `BENT` is a jump to the linkage's other branch. A
+        // step reached in one solve and closed on the cursor in a second is two pieces, each
+        // within `BENT` of straight where it crosses (seed 20,439, step 63: 0.153 to -0.0001,
+        // a hinge folded flat as the cursor passed, which bends on the other side in the
+        // steps after, a little more at each). How far the points moved against how far the
+        // cursor did is only measured: near the centre of its reach an arm swings round fast
+        // as the cursor passes, without changing branch.
         let mut swung = false;
         for &([a, b, c], lab, lbc) in &hinges {
             let bend = |p: &[[f64; 2]]| 2.0 * area(p[a], p[b], p[c]) / (lab * lbc);
             let (was, is) = (bend(&at), bend(&now));
             if was * is < 0.0 && (was - is).abs() > BENT {
-                if st.refused == 0 {
+                if st.refused == 0 && st.pieces <= 1 {
                     return Err(format!(
                         "step {k} ({st:?}): the hinge {a}-{b}-{c} turned from {was:.3} to {is:.3}"
                     ));
@@ -333,6 +337,11 @@ fn drag_one(seed: u64) -> Result<Dragged, String> {
 
 #[test]
 fn random_linkages_dragged_along_random_paths_hold_and_never_flip() {
+    // A hinge folded flat in a step of two pieces (see `drag_one`), found past the
+    // seeds run by default.
+    if let Err(e) = drag_one(20_439) {
+        panic!("seed 20439: {e}");
+    }
     let n: u64 = std::env::var("LOCI_RANDOM_DRAGS")
         .ok()
         .and_then(|v| v.parse().ok())
