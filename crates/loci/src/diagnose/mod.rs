@@ -24,6 +24,7 @@ mod measure;
 mod minimal;
 mod motion;
 mod redundant;
+mod remembered;
 mod report;
 mod structure;
 #[cfg(test)]
@@ -42,6 +43,7 @@ use crate::error::SolveError;
 use crate::model::{GroupId, System};
 use crate::solve::{solve_core, Config, Outcome, Report};
 use circuits::{Circuit, Rank};
+use remembered::{remembered, Alone};
 use report::NullSketch;
 use std::collections::HashSet;
 use unmerged::{Equations, Linear};
@@ -432,13 +434,18 @@ fn built_alone(
     let Some(part) = kept_alone(sys, set.iter().copied()) else {
         return false;
     };
-    if crate::solve::rescued_alone(&part, group, cfg) {
-        return true;
-    }
-    let Some(held) = crate::solve::holds_scattered(&part, group, cfg)
-        .or_else(|| crate::solve::rescued_scattered(&part, group, cfg))
-    else {
-        return false;
+    let alone = remembered(&part, group, cfg, || {
+        if crate::solve::rescued_alone(&part, group, cfg) {
+            return Alone::Rescued;
+        }
+        crate::solve::holds_scattered(&part, group, cfg)
+            .or_else(|| crate::solve::rescued_scattered(&part, group, cfg))
+            .map_or(Alone::Fails, Alone::Held)
+    });
+    let held = match alone {
+        Alone::Rescued => return true,
+        Alone::Fails => return false,
+        Alone::Held(held) => held,
     };
     let mut values: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     for (p, v) in part.params().iter().zip(held) {

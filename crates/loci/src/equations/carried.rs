@@ -50,6 +50,12 @@ pub(crate) struct Carried {
     list: Vec<usize>,
 }
 
+/// Whether solves on this thread read carried entities as expressions (always, outside the
+/// tests that compare the two ways).
+pub(crate) fn as_expressions() -> bool {
+    ENABLED.with(Cell::get)
+}
+
 impl Carried {
     /// The carried entities of `group` in `sys` when `dragged` parameters move least (none
     /// when expressions are switched off).

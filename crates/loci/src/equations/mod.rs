@@ -20,7 +20,7 @@ mod points;
 pub(crate) mod refs;
 pub(crate) mod spatial;
 
-pub(crate) use carried::Carried;
+pub(crate) use carried::{as_expressions, Carried};
 pub(crate) use compile::{compile_group, compile_unmerged, compile_unmerged_only, Kernel, Link};
 pub(crate) use duplicates::{duplicate_groups, still_duplicates};
 use refs::{Ent, Frame, Geo, PointRef};

@@ -24,6 +24,12 @@ thread_local! {
     static DUAL_ONLY: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
+/// Whether this thread's solves leave every equation here to the dual numbers.
+#[cfg(test)]
+pub(crate) fn dual_only_now() -> bool {
+    DUAL_ONLY.with(std::cell::Cell::get)
+}
+
 /// Runs `f` with the equations of this file differentiated by dual numbers, as every solve did
 /// before they were written out: tests compare the two.
 #[cfg(test)]
