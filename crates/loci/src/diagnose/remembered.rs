@@ -96,3 +96,56 @@ pub(super) fn remembered(
     });
     answer
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::format::json::Problem;
+    use std::cell::Cell;
+
+    fn two_points(x: f64) -> System {
+        let text = format!(
+            r#"{{"params": [{{"h": 1, "group": 2, "val": 0.0}}, {{"h": 2, "group": 2, "val": 0.0}},
+                {{"h": 3, "group": 2, "val": {x}}}, {{"h": 4, "group": 2, "val": 0.0}}],
+              "entities": [{{"h": 1, "group": 2, "type": "point_in_3d", "params": [1, 2, 4]}},
+                {{"h": 2, "group": 2, "type": "point_in_3d", "params": [3, 4, 4]}}],
+              "constraints": [{{"h": 1, "group": 2, "type": "pt_pt_distance", "val": 2.0,
+                "pt_a": 1, "pt_b": 2}}]}}"#
+        );
+        Problem::from_json(&text).expect("a valid problem").system
+    }
+
+    #[test]
+    fn the_same_question_is_answered_once_and_a_changed_value_is_asked_again() {
+        let cfg = Config::default();
+        let runs = Cell::new(0);
+        let check = || {
+            runs.set(runs.get() + 1);
+            Alone::Held(vec![f64::from(runs.get())])
+        };
+        let ask = |sys: &System| match remembered(sys, GroupId(2), &cfg, check) {
+            Alone::Held(v) => v[0],
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(ask(&two_points(1.0)), 1.0);
+        assert_eq!(ask(&two_points(1.0)), 1.0);
+        assert_eq!(runs.get(), 1);
+        // Another value, another question; and -0 is not 0.
+        assert_eq!(ask(&two_points(1.5)), 2.0);
+        assert_eq!(ask(&two_points(0.0)), 3.0);
+        assert_eq!(ask(&two_points(-0.0)), 4.0);
+        // Other settings, another question.
+        let strict = Config::default().with_tolerance(1e-12);
+        assert!(matches!(
+            remembered(&two_points(1.0), GroupId(2), &strict, || Alone::Fails),
+            Alone::Fails
+        ));
+        assert_eq!(runs.get(), 4);
+        // Only the last REMEMBERED are kept.
+        for k in 0..REMEMBERED {
+            ask(&two_points(10.0 + k as f64));
+        }
+        let before = runs.get();
+        assert_eq!(ask(&two_points(1.0)), f64::from(before + 1));
+    }
+}
