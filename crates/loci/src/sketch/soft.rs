@@ -307,7 +307,20 @@ impl Sketch {
             if r.outcome.is_ok() || active.is_empty() {
                 return Ok(self.report(&r, soft, &active, dropped));
             }
-            let chosen = self.in_the_way(soft, &active)?;
+            let chosen = if self.cfg.name_conflicts {
+                self.in_the_way(soft, &active)?
+            } else {
+                // Without the failure checks (a caller that answers a failure itself, as the
+                // check of a named conflict does), the constraints the solve found dependent
+                // stand in for the diagnosis's checked sets, whose checks cost many solves:
+                // the sketch of random seed 212, its conflict checked alone, spent 0.21 of
+                // its 0.32 s diagnosing that sketch of its own.
+                let members: Vec<Member> =
+                    r.failed.iter().map(|&c| Member::Constraint(c)).collect();
+                self.pick(soft, &active, &members, &[])
+                    .into_iter()
+                    .collect()
+            };
             if chosen.is_empty() {
                 break;
             }
@@ -333,45 +346,55 @@ impl Sketch {
         for verified in [true, false] {
             let mut chosen: Vec<usize> = Vec::new();
             for set in d.conflicting.iter().filter(|s| s.verified == verified) {
-                let mine: Vec<usize> = active
-                    .iter()
-                    .copied()
-                    .filter(|&i| set.members.contains(&Member::Constraint(soft[i].core)))
-                    .collect();
-                if mine.is_empty() || mine.iter().any(|i| chosen.contains(i)) {
-                    continue;
+                if let Some(pick) = self.pick(soft, active, &set.members, &chosen) {
+                    chosen.push(pick);
                 }
-                // Prefer a shape that no user constraint of the set names: the user spoke of
-                // the others.
-                let named: BTreeSet<EntityId> = set
-                    .members
-                    .iter()
-                    .filter_map(|m| match m {
-                        Member::Constraint(c) => self.owner.get(c),
-                        Member::Entity(_) => None,
-                    })
-                    .filter_map(|id| self.constraints.get(id))
-                    .flat_map(|r| {
-                        r.spec
-                            .shapes()
-                            .into_iter()
-                            .map(|(_, s)| s.0)
-                            .collect::<Vec<_>>()
-                    })
-                    .collect();
-                let pick = mine
-                    .iter()
-                    .copied()
-                    .rev()
-                    .find(|&i| !named.contains(&soft_shape(soft[i].soft)))
-                    .unwrap_or(mine[mine.len() - 1]);
-                chosen.push(pick);
             }
             if !chosen.is_empty() {
                 return Ok(chosen);
             }
         }
         Ok(Vec::new())
+    }
+
+    /// The active soft constraint to drop from a conflict of `members`, if it has one and none
+    /// already `chosen`: the last whose shape no user constraint of the set names (the user
+    /// spoke of the others), or the last.
+    fn pick(
+        &self,
+        soft: &[SoftRec],
+        active: &[usize],
+        members: &[Member],
+        chosen: &[usize],
+    ) -> Option<usize> {
+        let mine: Vec<usize> = active
+            .iter()
+            .copied()
+            .filter(|&i| members.contains(&Member::Constraint(soft[i].core)))
+            .collect();
+        if mine.iter().any(|i| chosen.contains(i)) {
+            return None;
+        }
+        let named: BTreeSet<EntityId> = members
+            .iter()
+            .filter_map(|m| match m {
+                Member::Constraint(c) => self.owner.get(c),
+                Member::Entity(_) => None,
+            })
+            .filter_map(|id| self.constraints.get(id))
+            .flat_map(|r| {
+                r.spec
+                    .shapes()
+                    .into_iter()
+                    .map(|(_, s)| s.0)
+                    .collect::<Vec<_>>()
+            })
+            .collect();
+        mine.iter()
+            .copied()
+            .rev()
+            .find(|&i| !named.contains(&soft_shape(soft[i].soft)))
+            .or_else(|| mine.last().copied())
     }
 
     /// Of the user constraints `named` redundant in a solve with soft constraints, those still
