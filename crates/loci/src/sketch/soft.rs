@@ -307,20 +307,7 @@ impl Sketch {
             if r.outcome.is_ok() || active.is_empty() {
                 return Ok(self.report(&r, soft, &active, dropped));
             }
-            let chosen = if self.cfg.name_conflicts {
-                self.in_the_way(soft, &active)?
-            } else {
-                // Without the failure checks (a caller that answers a failure itself, as the
-                // check of a named conflict does), the constraints the solve found dependent
-                // stand in for the diagnosis's checked sets, whose checks cost many solves:
-                // the sketch of random seed 212, its conflict checked alone, spent 0.21 of
-                // its 0.32 s diagnosing that sketch of its own.
-                let members: Vec<Member> =
-                    r.failed.iter().map(|&c| Member::Constraint(c)).collect();
-                self.pick(soft, &active, &members, &[])
-                    .into_iter()
-                    .collect()
-            };
+            let chosen = self.in_the_way(soft, &active, &r)?;
             if chosen.is_empty() {
                 break;
             }
@@ -341,7 +328,21 @@ impl Sketch {
 
     /// One active soft constraint from each conflict set that has any: those checked by
     /// solving them alone first, the others only when no checked set has one.
-    fn in_the_way(&self, soft: &[SoftRec], active: &[usize]) -> Result<Vec<usize>, SketchError> {
+    ///
+    /// Without the failure checks (a caller that answers a failure itself, as the check of a
+    /// named conflict does), the constraints the solve `r` found dependent stand in for the
+    /// diagnosis's checked sets, whose checks cost many solves: the sketch of random seed 212,
+    /// its conflict checked alone, spent 0.21 of its 0.32 s diagnosing that sketch of its own.
+    fn in_the_way(
+        &self,
+        soft: &[SoftRec],
+        active: &[usize],
+        r: &Report,
+    ) -> Result<Vec<usize>, SketchError> {
+        if !self.cfg.name_conflicts {
+            let members: Vec<Member> = r.failed.iter().map(|&c| Member::Constraint(c)).collect();
+            return Ok(self.pick(soft, active, &members, &[]).into_iter().collect());
+        }
         let d = crate::diagnose(&self.sys, Self::SHAPE_GROUP, &self.cfg)?;
         for verified in [true, false] {
             let mut chosen: Vec<usize> = Vec::new();

@@ -479,7 +479,7 @@ fn solve_values(
         &mut finishes,
         &x_grouped,
         &comps.cols,
-        &|c| params[col_root[c]].val,
+        col_root,
         params,
         kernels,
     );

@@ -60,17 +60,17 @@ fn is_length(kind: &EqKind) -> bool {
 
 /// Marks every converged component whose unknowns `x` (one slice per component, in order;
 /// component unknown `i` overall is column `cols[i]`) are more than [`RUNAWAY`] times the
-/// drawing's size from where the drawing has them (`drawn`, by column), as not converged, with
-/// the rows on the unknowns that ran off unsatisfied. Measured from the drawing, not from the
+/// drawing's size from where the drawing has them (column `c` reads `params[col_root[c]]`), as
+/// not converged, with the rows on the unknowns that ran off unsatisfied. Measured from the drawing, not from the
 /// start of this solve: a rescue that starts further off must not carry a placement that ran
-/// off back as an answer. `params` are the drawing's parameters, for its size. Nothing is
+/// off back as an answer. `params` are the drawing's parameters, also for its size. Nothing is
 /// computed beyond one pass over the unknowns unless one of them is more than [`RUNAWAY`] off.
 pub(super) fn reject_runaways(
     components: &[Component],
     finishes: &mut [Finish],
     x: &[f64],
     cols: &[usize],
-    drawn: &dyn Fn(usize) -> f64,
+    col_root: &[usize],
     params: &[Param],
     kernels: &[Kernel],
 ) {
@@ -80,7 +80,7 @@ pub(super) fn reject_runaways(
         let n = comp.scale.len();
         let (x, cols) = (&x[at..at + n], &cols[at..at + n]);
         at += n;
-        let off = |i: usize| (x[i] - drawn(cols[i])).abs();
+        let off = |i: usize| (x[i] - params[col_root[cols[i]]].val).abs();
         if !fin.converged || (0..n).all(|i| off(i) <= RUNAWAY) {
             continue;
         }
