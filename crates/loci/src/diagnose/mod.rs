@@ -41,7 +41,7 @@ pub use report::{
 use crate::equations::{Kernel, Link, Owner};
 use crate::error::SolveError;
 use crate::model::{GroupId, System};
-use crate::solve::{solve_core, Config, Outcome, Report};
+use crate::solve::{solve_core, Config, Outcome, Report, Scattered};
 use circuits::{Circuit, Rank};
 use remembered::{remembered, Alone};
 use report::NullSketch;
@@ -316,7 +316,7 @@ pub(crate) fn name_conflicts(
     // solves near the drawing only, sees the part hold there and keeps the member that makes
     // the real conflict (seed 451,288 of the random sketches: an angle of 140 degrees from a
     // horizontal line to a vertical one, shrunk to the horizontal and the angle, which fold
-    // near the drawing like the pair of `holds_scattered`, and then named nothing).
+    // near the drawing like the pair of `checked_scattered`, and then named nothing).
     let (searched_sets, found) = searched_again(&[values, &start], |starts, solutions| {
         let (mut sets, mut searched) = (Vec::new(), false);
         if !seed.is_empty() {
@@ -419,8 +419,10 @@ pub(crate) fn name_conflicts(
 /// Whether the members of `set`, kept alone in a system of their own (with the entities and
 /// parameters they refer to), solve by one of the solve's rescues
 /// ([`crate::solve::rescued_alone`]), or from starts drawn at random
-/// ([`crate::solve::holds_scattered`]; a large set by the rescues from there too,
-/// [`crate::solve::rescued_scattered`]).
+/// ([`crate::solve::checked_scattered`]; a large set by the rescues from there too,
+/// [`crate::solve::rescued_scattered`]); or are not shown to fail, every solve from those
+/// starts still going when its iterations ran out ([`Scattered::Undecided`]): a set is
+/// named only once its solves have stopped short of holding.
 ///
 /// Where only a random start solves it, the values there are pushed on `solutions`: every
 /// parameter of `sys` as it stands but those of the set, which are where it holds.
@@ -438,12 +440,18 @@ fn built_alone(
         if crate::solve::rescued_alone(&part, group, cfg) {
             return Alone::Rescued;
         }
-        crate::solve::holds_scattered(&part, group, cfg)
-            .or_else(|| crate::solve::rescued_scattered(&part, group, cfg))
-            .map_or(Alone::Fails, Alone::Held)
+        let scattered = crate::solve::checked_scattered(&part, group, cfg);
+        if let Scattered::Held(held) = scattered {
+            return Alone::Held(held);
+        }
+        match crate::solve::rescued_scattered(&part, group, cfg) {
+            Some(held) => Alone::Held(held),
+            None if matches!(scattered, Scattered::Undecided) => Alone::Undecided,
+            None => Alone::Fails,
+        }
     });
     let held = match alone {
-        Alone::Rescued => return true,
+        Alone::Rescued | Alone::Undecided => return true,
         Alone::Fails => return false,
         Alone::Held(held) => held,
     };

@@ -25,6 +25,9 @@ pub(super) enum Alone {
     Held(Vec<f64>),
     /// Not at all.
     Fails,
+    /// Not within the iterations allowed, every solve still going when they ran out: not
+    /// shown to fail ([`crate::solve::Scattered::Undecided`]).
+    Undecided,
 }
 
 /// How many checks each thread remembers (the most recent).

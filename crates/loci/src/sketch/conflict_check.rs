@@ -1,15 +1,18 @@
-//! A conflict named by a sketch solve is checked the way a user would check it: its
-//! constraints alone, in a sketch of their own with the soft constraints every solve adds.
+//! A conflict named by a sketch solve, or what a solve that did not converge left unsatisfied,
+//! is checked the way a user would check it: those constraints alone, in a sketch of their own
+//! with the soft constraints every solve adds.
 //!
 //! The core checks a set before naming it by solving the set alone from the drawing and from
 //! starts scattered about it. Without the soft constraints that keep the other lines' lengths,
-//! a set that holds only once the drawing is scaled many times over passes that check: a
+//! a set that holds only once the drawing is scaled many times over escapes that check: a
 //! right triangle whose hypotenuse must make 89.4 degrees with one leg while a circle of
 //! radius 1.4 touches one end of that leg and its centre stays 6.1 from the other. Only a
-//! locked length on the hypotenuse made it impossible, and the lock was left out of the named
-//! set (random sketch 31,931). Alone, with the soft constraints, the set solves with the
-//! triangle 60 times its size. The whole sketch then starts again from there, where the set
-//! holds and Newton meets what truly stands in the way.
+//! locked length on the hypotenuse made it impossible (random sketch 31,931), and the lock
+//! was left out of the named set; since, the core names no set there (its solves of the set
+//! alone creep towards the far placement until their iterations run out, which shows
+//! nothing) and the solve reads `did_not_converge`. Alone, with the soft constraints, the set
+//! solves with the triangle 60 times its size. The whole sketch then starts again from there,
+//! where the set holds and Newton meets what truly stands in the way.
 
 use super::{Sketch, SketchError, SketchReport};
 use crate::solve::Outcome;
@@ -19,8 +22,9 @@ use crate::solve::Outcome;
 const RESTARTS: usize = 2;
 
 impl Sketch {
-    /// `first`, the report of [`Sketch::solve_soft`], or, when the conflict it names holds in a
-    /// sketch of its own, the report of the sketch solved again from where the set holds:
+    /// `first`, the report of [`Sketch::solve_soft`], or, when the conflict it names (or the
+    /// constraints it left unsatisfied) hold in a sketch of their own, the report of the
+    /// sketch solved again from where they hold:
     /// a solution, or a conflict named from there. The drawing is left as it was unless a
     /// solve succeeds. Only with failure checks on ([`crate::Config::with_failure_checks`]).
     pub(super) fn recheck_conflict(
@@ -32,7 +36,9 @@ impl Sketch {
             return Ok(r);
         }
         for _ in 0..RESTARTS {
-            if r.outcome != Outcome::Inconsistent || r.failed.is_empty() {
+            if !matches!(r.outcome, Outcome::Inconsistent | Outcome::DidNotConverge)
+                || r.failed.is_empty()
+            {
                 return Ok(r);
             }
             // Without the failure checks: the core ran them on the set before naming it, and

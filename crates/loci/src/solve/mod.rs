@@ -39,10 +39,11 @@ mod unknowns_tests;
 pub use config::Config;
 pub(crate) use gram::MAX_PRODUCTS;
 pub use report::{Outcome, Report};
-use rescue::{found_further_off, rescued};
 pub(crate) use rescue::{
-    holds_alone, holds_scattered, rescued_alone, rescued_scattered, solution_further_off,
+    checked_scattered, holds_alone, rescued_alone, rescued_scattered, solution_further_off,
+    Scattered,
 };
+use rescue::{found_further_off, rescued};
 
 use crate::equations::{compile_group, still_duplicates, Carried, Link, Owner};
 use crate::error::SolveError;
