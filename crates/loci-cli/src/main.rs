@@ -215,7 +215,8 @@ fn run(cli: Cli) -> anyhow::Result<u8> {
                         req.group,
                         &before,
                         &problem.system,
-                        &rep
+                        &rep,
+                        req.config().max_iterations
                     )
                 );
             }

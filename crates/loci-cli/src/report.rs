@@ -3,13 +3,15 @@
 use loci::{GroupId, Outcome, Report, System};
 use std::fmt::Write;
 
-/// Renders a report of solving `group`, comparing parameter values before and after.
+/// Renders a report of solving `group` with at most `max_iterations` Newton iterations,
+/// comparing parameter values before and after.
 pub(crate) fn render(
     name: &str,
     group: GroupId,
     before: &System,
     after: &System,
     rep: &Report,
+    max_iterations: usize,
 ) -> String {
     let mut s = String::new();
     let verdict = match rep.outcome {
@@ -31,6 +33,14 @@ pub(crate) fn render(
         "  iterations   {}  (largest residual {:.3e})",
         rep.iterations, rep.residual
     );
+    if rep.outcome == Outcome::DidNotConverge && rep.iterations >= max_iterations {
+        // Stopped by the limit, not where the steps could go no further.
+        let _ = writeln!(
+            s,
+            "  limit        ran out of iterations (max_iterations {max_iterations}) still \
+             moving; a higher limit may reach a solution"
+        );
+    }
     let label = match rep.outcome {
         Outcome::Okay => "failed",
         Outcome::RedundantOkay => "redundant",

@@ -486,3 +486,25 @@ fn long_lists_are_cut_short_in_the_text_reports_and_whole_in_json() {
         "{line}"
     );
 }
+
+#[test]
+fn a_solve_stopped_by_its_iteration_limit_says_so() {
+    let file =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../loci/tests/data/far_solution_creeps.json");
+    let out = loci(&["solve", file.to_str().unwrap()]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{text}");
+    assert!(text.contains("did not converge"), "{text}");
+    assert!(
+        text.contains(
+            "  limit        ran out of iterations (max_iterations 1000) still moving; \
+             a higher limit may reach a solution"
+        ),
+        "{text}"
+    );
+    // A solve that stops where its steps can go no further says nothing of a limit.
+    let inconsistent =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/inconsistent.json");
+    let text = String::from_utf8(loci(&["solve", inconsistent.to_str().unwrap()]).stdout).unwrap();
+    assert!(!text.contains("limit"), "{text}");
+}
