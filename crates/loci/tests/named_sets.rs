@@ -148,7 +148,7 @@ fn no_named_conflict_holds_when_kept_alone() {
     }
 }
 
-/// Four constraints that hold only far from where they are drawn: a right triangle whose
+/// Five constraints that hold only far from where they are drawn: a right triangle whose
 /// hypotenuse must make 89.37 degrees with its short leg, that leg's ends on a circle of
 /// diameter 2.8 and 6.1 from its centre, so the long leg must grow from 5.9 to 427 (the
 /// constraints of random sketch 31,931 without its lock). Newton creeps there for 3,285
