@@ -367,6 +367,10 @@ impl Sketch {
                 return Ok(chosen);
             }
         }
+        if !d.conflicting.is_empty() {
+            // The user constraints conflict among themselves: no soft constraint is in the way.
+            return Ok(Vec::new());
+        }
         *diagnosing = false;
         Ok(of_the_solve())
     }
