@@ -22,6 +22,8 @@ mod freedom;
 mod groups;
 mod measure;
 mod minimal;
+#[cfg(test)]
+mod minimal_tests;
 mod motion;
 mod redundant;
 mod remembered;

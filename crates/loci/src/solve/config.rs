@@ -76,7 +76,9 @@ pub struct Config {
     /// depend on others yet. A solve whose stopping point the rank test reads goes on
     /// crawling until rows become dependent, so that it can name what cannot hold; a check
     /// of a candidate conflict's part only asks whether its equations hold, and names
-    /// nothing from where it stops.
+    /// nothing from where it stops. Such a check's damped steps also measure the merit with
+    /// the row weights of their first step throughout, and end where it settles above zero
+    /// (`newton::rules::settles_above`) at any damping.
     pub(crate) crawl_fails: bool,
 }
 

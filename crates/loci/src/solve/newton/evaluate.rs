@@ -240,6 +240,31 @@ impl Component {
         }
     }
 
+    /// Gives the rows of `jn` (normalised, with their inverse norms in `inv`) the weights
+    /// `held` instead: each row becomes its Jacobian row times its weight in `held`, and `inv`
+    /// that weight. An empty row stays empty, and a row with no weight held keeps its own.
+    pub(super) fn hold_weights(
+        &self,
+        kernels: &[Kernel],
+        jn: &mut [f64],
+        inv: &mut [f64],
+        held: &[f64],
+    ) {
+        for b in &self.blocks {
+            let w = b.ncols as usize;
+            for row in 0..kernels[b.kernel].rows {
+                let i = b.row0 + row;
+                if inv[i] == 0.0 || held[i] == 0.0 {
+                    continue;
+                }
+                let f = held[i] / inv[i];
+                let at = b.jv0 + row * w;
+                jn[at..at + w].iter_mut().for_each(|v| *v *= f);
+                inv[i] = held[i];
+            }
+        }
+    }
+
     /// Moves the unknowns of every equation whose gradient vanishes where it does not hold, by
     /// a small deterministic amount in a generic direction; true if anything moved.
     ///
