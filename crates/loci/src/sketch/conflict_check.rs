@@ -28,8 +28,14 @@ impl Sketch {
     /// `first`, the report of [`Sketch::solve_soft`], or, when the conflict it names (or the
     /// constraints it left unsatisfied) hold in a sketch of their own, the report of the
     /// sketch solved again from where they hold:
-    /// a solution, or a conflict named from there. The drawing is left as it was unless a
-    /// solve succeeds. Only with failure checks on ([`crate::Config::with_failure_checks`]).
+    /// a solution, or a conflict named from there. Where the set fails alone and its solve
+    /// there names a part of it, that part is the conflict. Where the restarts end short of a
+    /// solution, every constraint named or left unsatisfied on the way is solved alone, and a
+    /// conflict named there is the sketch's: random sketch 50,704 moved off, an angle changed,
+    /// read `did_not_converge`; nine constraints of its pentagon hold alone with the drawing 50
+    /// times its size, and only with the equal length of two of its sides do they conflict,
+    /// which no one set on the way showed. The drawing is left as it was unless a solve
+    /// succeeds. Only with failure checks on ([`crate::Config::with_failure_checks`]).
     pub(super) fn recheck_conflict(
         &mut self,
         first: SketchReport,
@@ -48,14 +54,20 @@ impl Sketch {
         if !self.cfg.name_conflicts {
             return Ok(r);
         }
+        // Every constraint named or left unsatisfied on the way: where the restarts end short
+        // of a solution, the conflict may be among them all rather than in any one set.
+        let mut seen: Vec<SketchConstraintId> = Vec::new();
         for _ in 0..RESTARTS {
             if !matches!(r.outcome, Outcome::Inconsistent | Outcome::DidNotConverge)
                 || r.failed.is_empty()
             {
                 return Ok(r);
             }
-            let Some(alone) = self.solved_alone(&r.failed, depth)? else {
-                return Ok(r);
+            add_new(&mut seen, &r.failed);
+            let alone = match self.solved_alone(&r.failed, depth)? {
+                Alone::Held(alone) => alone,
+                Alone::Conflict(set) => return Ok(named(r, set)),
+                Alone::Failed => break,
             };
             let drawn = self.values_from(&alone);
             let again = self.solve_soft()?;
@@ -67,11 +79,22 @@ impl Sketch {
             }
             r = again;
         }
-        Ok(r)
+        if r.outcome != Outcome::DidNotConverge {
+            return Ok(r);
+        }
+        add_new(&mut seen, &r.failed);
+        if seen.len() == r.failed.len() {
+            return Ok(r);
+        }
+        seen.sort_unstable();
+        Ok(match self.solved_alone(&seen, depth)? {
+            Alone::Conflict(set) => named(r, set),
+            Alone::Held(_) | Alone::Failed => r,
+        })
     }
 
     /// The constraints `set` alone, in a sketch of their own with the soft constraints every
-    /// solve adds, solved, if they hold there.
+    /// solve adds, solved if they hold there, or the part of them named a conflict there.
     ///
     /// Without the failure checks: the core ran them on the set before naming it, and what
     /// they miss is what the soft constraints add. A set that truly conflicts then costs one
@@ -83,11 +106,7 @@ impl Sketch {
     /// left some unsatisfied, those held alone, and from there the nine hold. They were named
     /// a conflict. Solved without the checks at both levels, the nine failed again from where
     /// a part of them held.
-    fn solved_alone(
-        &self,
-        set: &[SketchConstraintId],
-        depth: usize,
-    ) -> Result<Option<Sketch>, SketchError> {
+    fn solved_alone(&self, set: &[SketchConstraintId], depth: usize) -> Result<Alone, SketchError> {
         let mut alone = self.clone();
         alone.cfg = self.cfg.clone().with_failure_checks(false);
         for &id in self.constraints.keys() {
@@ -96,15 +115,21 @@ impl Sketch {
             }
         }
         if alone.solve_soft()?.outcome.is_ok() {
-            return Ok(Some(alone));
+            return Ok(Alone::Held(Box::new(alone)));
         }
         if depth == 0 {
-            return Ok(None);
+            return Ok(Alone::Failed);
         }
         alone.cfg = self.cfg.clone();
         let full = alone.solve_soft()?;
         let r = alone.recheck_nested(full, depth - 1)?;
-        Ok(r.outcome.is_ok().then_some(alone))
+        Ok(if r.outcome.is_ok() {
+            Alone::Held(Box::new(alone))
+        } else if r.outcome == Outcome::Inconsistent && !r.failed.is_empty() {
+            Alone::Conflict(r.failed)
+        } else {
+            Alone::Failed
+        })
     }
 
     /// Takes every parameter's value from `other` where it has that parameter; returns the
@@ -121,5 +146,33 @@ impl Sketch {
             *v = a;
         }
         drawn
+    }
+}
+
+/// What solving a set of constraints alone ([`Sketch::solved_alone`]) found.
+enum Alone {
+    /// The set holds: the sketch of the set alone, solved.
+    Held(Box<Sketch>),
+    /// A part of the set conflicts, named by the solve of the set alone with the failure
+    /// checks and checked there as every named conflict is: a conflict of any sketch that
+    /// holds the set.
+    Conflict(Vec<SketchConstraintId>),
+    /// Neither.
+    Failed,
+}
+
+/// `r`, a solve that failed, reporting `set` as the conflict instead.
+fn named(mut r: SketchReport, set: Vec<SketchConstraintId>) -> SketchReport {
+    r.outcome = Outcome::Inconsistent;
+    r.failed = set;
+    r
+}
+
+/// Adds to `seen` the constraints of `more` it does not hold yet.
+fn add_new(seen: &mut Vec<SketchConstraintId>, more: &[SketchConstraintId]) {
+    for &id in more {
+        if !seen.contains(&id) {
+            seen.push(id);
+        }
     }
 }
