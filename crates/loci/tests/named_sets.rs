@@ -204,8 +204,7 @@ fn constraints_still_creeping_when_iterations_run_out_are_not_named() {
 #[test]
 fn a_conflict_whose_smallest_part_creeps_is_named_whole() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    let text =
-        std::fs::read_to_string(root.join("tests/data/triangle_angle_creeps.json")).unwrap();
+    let text = std::fs::read_to_string(root.join("tests/data/triangle_angle_creeps.json")).unwrap();
     let problem = Problem::from_json(&text).unwrap();
     let group = problem.request().group;
     let cfg = Config::default();
@@ -229,5 +228,11 @@ fn a_conflict_whose_smallest_part_creeps_is_named_whole() {
     // The angle with the distance along its first line and the one across: allowed more
     // iterations than the check of a set gets, the solve still ends short of holding.
     let more = cfg.clone().with_max_iterations(5_000);
-    assert!(!holds_alone(sys, group, &[], &more, &[2, 8, 9].map(ConstraintId)));
+    assert!(!holds_alone(
+        sys,
+        group,
+        &[],
+        &more,
+        &[2, 8, 9].map(ConstraintId)
+    ));
 }

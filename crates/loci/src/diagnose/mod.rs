@@ -576,6 +576,7 @@ const WHOLE_SEARCH_LIMIT: usize = 64;
 /// reported only once it fails on its own from one of `starts` (where the solve stopped, the
 /// drawing); those of up to `minimise_up_to` members are also shrunk to minimal sets. Also
 /// whether the one set was found by shrinking the whole group, no dependence showing it.
+#[allow(clippy::too_many_arguments)]
 fn conflict_sets(
     eqs: &Equations,
     lin: &Linear,
