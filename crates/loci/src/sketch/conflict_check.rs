@@ -16,6 +16,7 @@
 
 use super::{Sketch, SketchConstraintId, SketchError, SketchReport};
 use crate::solve::Outcome;
+use std::collections::BTreeSet;
 
 /// How many times a named set that holds alone sends the solve to start again from where the
 /// set holds.
@@ -56,14 +57,14 @@ impl Sketch {
         }
         // Every constraint named or left unsatisfied on the way: where the restarts end short
         // of a solution, the conflict may be among them all rather than in any one set.
-        let mut seen: Vec<SketchConstraintId> = Vec::new();
+        let mut seen: BTreeSet<SketchConstraintId> = BTreeSet::new();
         for _ in 0..RESTARTS {
             if !matches!(r.outcome, Outcome::Inconsistent | Outcome::DidNotConverge)
                 || r.failed.is_empty()
             {
                 return Ok(r);
             }
-            add_new(&mut seen, &r.failed);
+            seen.extend(r.failed.iter().copied());
             let alone = match self.solved_alone(&r.failed, depth)? {
                 Alone::Held(alone) => alone,
                 Alone::Conflict(set) => return Ok(named(r, set)),
@@ -82,11 +83,11 @@ impl Sketch {
         if r.outcome != Outcome::DidNotConverge {
             return Ok(r);
         }
-        add_new(&mut seen, &r.failed);
+        seen.extend(r.failed.iter().copied());
         if seen.len() == r.failed.len() {
             return Ok(r);
         }
-        seen.sort_unstable();
+        let seen: Vec<SketchConstraintId> = seen.into_iter().collect();
         Ok(match self.solved_alone(&seen, depth)? {
             Alone::Conflict(set) => named(r, set),
             Alone::Held(_) | Alone::Failed => r,
@@ -166,13 +167,4 @@ fn named(mut r: SketchReport, set: Vec<SketchConstraintId>) -> SketchReport {
     r.outcome = Outcome::Inconsistent;
     r.failed = set;
     r
-}
-
-/// Adds to `seen` the constraints of `more` it does not hold yet.
-fn add_new(seen: &mut Vec<SketchConstraintId>, more: &[SketchConstraintId]) {
-    for &id in more {
-        if !seen.contains(&id) {
-            seen.push(id);
-        }
-    }
 }
