@@ -28,6 +28,7 @@ mod motion;
 mod redundant;
 mod remembered;
 mod report;
+mod shrunk;
 mod structure;
 #[cfg(test)]
 mod tests;
@@ -47,6 +48,7 @@ use crate::solve::{solve_core, Config, Outcome, Report, Scattered};
 use circuits::{Circuit, Rank};
 use remembered::{remembered, Alone};
 use report::NullSketch;
+use shrunk::Shrunk;
 use std::collections::HashSet;
 use unmerged::{Equations, Linear};
 
@@ -101,6 +103,7 @@ fn diagnosed(
         });
     // As the solve names them: none that holds alone by the solve's rescues or from random
     // starts, searched again from where a dropped set holds ([`searched_again`]).
+    let mut shrunk = Shrunk::default();
     let (mut conflicting, found) = searched_again(&[&values, &start], |starts, solutions| {
         let (mut conflicting, _) = conflict_sets(
             &eqs,
@@ -110,12 +113,15 @@ fn diagnosed(
             report.outcome,
             cfg,
             usize::MAX,
+            &mut shrunk,
         );
         if ran_off(&eqs, &start, report.residual) {
             conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
         }
-        conflicting.retain(|s| !built_alone(sys, group, &s.members, cfg, solutions));
         conflicting
+            .into_iter()
+            .filter_map(|s| shrunk.failing_alone(sys, group, s, cfg, solutions))
+            .collect::<Vec<_>>()
     });
     // Nothing fails, and the whole solves from where a set dropped above holds: the solve
     // finds that solution too ([`crate::solve`]), and the diagnosis is of the sketch there.
@@ -265,46 +271,49 @@ pub(crate) fn name_conflicts(
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     // The sets, and whether they were found only by shrinking the whole group: no dependence
     // where the solve stopped shows them, only solves that fail.
-    let sets_in = |eqs: &Equations, starts: &[&[f64]]| -> (Vec<ConflictSet>, bool) {
-        let lin = eqs.linearise(values);
-        let lin = eqs
-            .linearise_off_singular(values, &lin, cfg.tolerance)
-            .unwrap_or(lin);
-        let Some(mut rank) = Rank::new(eqs, &lin, cfg) else {
-            return (Vec::new(), false);
-        };
-        let mut rows = circuits::may_conflict(eqs, &lin, &mut rank, cfg);
-        let sets_of = |circuits: &[Circuit]| {
-            conflict_sets(
-                eqs,
-                &lin,
-                circuits,
-                starts,
-                report.outcome,
-                cfg,
-                cfg.verify_conflicts_up_to,
-            )
-        };
-        if rows.len() > LAZY_FROM {
-            // The circuits of the rows with the largest residuals first: when the sets they
-            // give are minimal and everything else holds without the members those sets
-            // share, no other conflict is left to find. The one impossible diagonal of a 75x75
-            // mesh: one batch of 32 circuits and one solve of all the rest (0.8 s in all),
-            // where the 3,385 circuits that could conflict took 2.8 s.
-            let first = circuits::circuits_of(eqs, &lin, &mut rank, cfg, &rows[..circuits::BATCH]);
-            let (sets, searched) = sets_of(&first);
-            if let Some(shared) = shared_members(&sets) {
-                if sets.iter().all(|s| s.verified)
-                    && minimal::all_but_hold(eqs, &shared, starts, cfg)
-                {
-                    return (sets, searched);
+    let sets_in =
+        |eqs: &Equations, starts: &[&[f64]], shrunk: &mut Shrunk| -> (Vec<ConflictSet>, bool) {
+            let lin = eqs.linearise(values);
+            let lin = eqs
+                .linearise_off_singular(values, &lin, cfg.tolerance)
+                .unwrap_or(lin);
+            let Some(mut rank) = Rank::new(eqs, &lin, cfg) else {
+                return (Vec::new(), false);
+            };
+            let mut rows = circuits::may_conflict(eqs, &lin, &mut rank, cfg);
+            let sets_of = |circuits: &[Circuit], shrunk: &mut Shrunk| {
+                conflict_sets(
+                    eqs,
+                    &lin,
+                    circuits,
+                    starts,
+                    report.outcome,
+                    cfg,
+                    cfg.verify_conflicts_up_to,
+                    shrunk,
+                )
+            };
+            if rows.len() > LAZY_FROM {
+                // The circuits of the rows with the largest residuals first: when the sets they
+                // give are minimal and everything else holds without the members those sets
+                // share, no other conflict is left to find. The one impossible diagonal of a 75x75
+                // mesh: one batch of 32 circuits and one solve of all the rest (0.8 s in all),
+                // where the 3,385 circuits that could conflict took 2.8 s.
+                let first =
+                    circuits::circuits_of(eqs, &lin, &mut rank, cfg, &rows[..circuits::BATCH]);
+                let (sets, searched) = sets_of(&first, shrunk);
+                if let Some(shared) = shared_members(&sets) {
+                    if sets.iter().all(|s| s.verified)
+                        && minimal::all_but_hold(eqs, &shared, starts, cfg)
+                    {
+                        return (sets, searched);
+                    }
                 }
             }
-        }
-        rows.sort_unstable();
-        let circuits = circuits::circuits_of(eqs, &lin, &mut rank, cfg, &rows);
-        sets_of(&circuits)
-    };
+            rows.sort_unstable();
+            let circuits = circuits::circuits_of(eqs, &lin, &mut rank, cfg, &rows);
+            sets_of(&circuits, shrunk)
+        };
     // First among the constraints the solver named and the equalities joining them, then, if
     // that names nothing, in the whole group.
     let seed: HashSet<Owner> = report
@@ -319,18 +328,19 @@ pub(crate) fn name_conflicts(
     // the real conflict (seed 451,288 of the random sketches: an angle of 140 degrees from a
     // horizontal line to a vertical one, shrunk to the horizontal and the angle, which fold
     // near the drawing like the pair of `checked_scattered`, and then named nothing).
+    let mut shrunk = Shrunk::default();
     let (searched_sets, found) = searched_again(&[values, &start], |starts, solutions| {
         let (mut sets, mut searched) = (Vec::new(), false);
         if !seed.is_empty() {
             let keep = focus::focus(sys, group, &seed, kernels, links);
             if let Ok(eqs) = Equations::only(sys, group, &start, &|o| keep.contains(&o)) {
-                (sets, searched) = sets_in(&eqs, starts);
+                (sets, searched) = sets_in(&eqs, starts, &mut shrunk);
             }
         }
         let mut whole = None;
         if sets.is_empty() {
             let all = Equations::new(sys, group, &start).ok()?;
-            (sets, searched) = sets_in(&all, starts);
+            (sets, searched) = sets_in(&all, starts, &mut shrunk);
             whole = Some(all);
         }
         // Only a large set can be dropped for a solve that ran off: the whole group's
@@ -358,14 +368,16 @@ pub(crate) fn name_conflicts(
                 whole = Equations::new(sys, group, &start).ok();
             }
             // A set that holds either way is dropped.
-            sets.retain(|s| {
-                let holds = built_alone(sys, group, &s.members, cfg, solutions)
-                    || (quick(s)
+            sets = sets
+                .into_iter()
+                .filter_map(|s| shrunk.failing_alone(sys, group, s, cfg, solutions))
+                .filter(|s| {
+                    !(quick(s)
                         && whole
                             .as_ref()
-                            .is_some_and(|all| minimal::holds(all, &s.members, starts, cfg)));
-                !holds
-            });
+                            .is_some_and(|all| minimal::holds(all, &s.members, starts, cfg)))
+                })
+                .collect();
         }
         Some((sets, searched, whole))
     });
@@ -418,6 +430,17 @@ pub(crate) fn name_conflicts(
     proven
 }
 
+/// What [`checked_alone`] found of a set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Checked {
+    /// It holds (or is rescued) alone.
+    Holds,
+    /// It stopped short of holding.
+    Fails,
+    /// Every solve from the scattered starts was still going when its iterations ran out.
+    Undecided,
+}
+
 /// Whether the members of `set`, kept alone in a system of their own (with the entities and
 /// parameters they refer to), solve by one of the solve's rescues
 /// ([`crate::solve::rescued_alone`]), or from starts drawn at random
@@ -428,15 +451,15 @@ pub(crate) fn name_conflicts(
 ///
 /// Where only a random start solves it, the values there are pushed on `solutions`: every
 /// parameter of `sys` as it stands but those of the set, which are where it holds.
-fn built_alone(
+pub(super) fn checked_alone(
     sys: &System,
     group: GroupId,
     set: &[Member],
     cfg: &Config,
     solutions: &mut Vec<Vec<f64>>,
-) -> bool {
+) -> Checked {
     let Some(part) = kept_alone(sys, set.iter().copied()) else {
-        return false;
+        return Checked::Fails;
     };
     let alone = remembered(&part, group, cfg, || {
         if crate::solve::rescued_alone(&part, group, cfg) {
@@ -453,8 +476,9 @@ fn built_alone(
         }
     });
     let held = match alone {
-        Alone::Rescued | Alone::Undecided => return true,
-        Alone::Fails => return false,
+        Alone::Rescued => return Checked::Holds,
+        Alone::Undecided => return Checked::Undecided,
+        Alone::Fails => return Checked::Fails,
         Alone::Held(held) => held,
     };
     let mut values: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
@@ -464,11 +488,11 @@ fn built_alone(
         }
     }
     solutions.push(values);
-    true
+    Checked::Holds
 }
 
 /// `search` from the starts `base`; then, while it leaves solutions on its second argument
-/// (of sets it dropped because they hold from a start drawn at random, see [`built_alone`]),
+/// (of sets it dropped because they hold from a start drawn at random, see [`checked_alone`]),
 /// again with those among its starts, at most [`REGROWN`] more times. Its last result, and
 /// every solution left.
 fn searched_again<T>(
@@ -552,6 +576,7 @@ const WHOLE_SEARCH_LIMIT: usize = 64;
 /// reported only once it fails on its own from one of `starts` (where the solve stopped, the
 /// drawing); those of up to `minimise_up_to` members are also shrunk to minimal sets. Also
 /// whether the one set was found by shrinking the whole group, no dependence showing it.
+#[allow(clippy::too_many_arguments)]
 fn conflict_sets(
     eqs: &Equations,
     lin: &Linear,
@@ -560,6 +585,7 @@ fn conflict_sets(
     outcome: Outcome,
     cfg: &Config,
     minimise_up_to: usize,
+    shrunk: &mut Shrunk,
 ) -> (Vec<ConflictSet>, bool) {
     let members_of = |rows: &mut dyn Iterator<Item = usize>| {
         let mut m: Vec<Member> = rows
@@ -691,6 +717,7 @@ fn conflict_sets(
             (c.clone(), false, fails)
         };
         if fails && done.insert(members.clone()) {
+            shrunk.record(&members, c);
             out.push(ConflictSet { members, verified });
         }
     }

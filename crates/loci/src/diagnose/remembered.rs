@@ -1,4 +1,4 @@
-//! The last checks of a set kept alone ([`super::built_alone`]), remembered on each thread.
+//! The last checks of a set kept alone ([`super::checked_alone`]), remembered on each thread.
 //!
 //! A sketch that cannot hold is solved several times over: once with its soft constraints,
 //! once more by the diagnosis that picks the soft constraint in the way, again without it, and
