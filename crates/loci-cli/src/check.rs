@@ -89,10 +89,14 @@ pub(crate) fn render(name: &str, sys: &System, d: &Diagnosis, all: bool) -> Stri
     } else {
         let _ = writeln!(
             s,
-            "  conflicting  (each set cannot hold; removing any one member of it can)"
+            "  conflicting  (each set cannot hold; removing any one member of it can, unless marked)"
         );
         for c in &d.conflicting {
-            let note = if c.verified { "" } else { "  [not checked]" };
+            let note = if c.verified {
+                ""
+            } else {
+                "  [not shown minimal]"
+            };
             let _ = writeln!(s, "    {{{}}}{note}", list(sys, &c.members));
         }
     }

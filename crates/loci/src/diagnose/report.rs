@@ -44,8 +44,11 @@ impl fmt::Display for Member {
 pub struct ConflictSet {
     /// The members, most recently added (highest handle) first.
     pub members: Vec<Member>,
-    /// Whether the set was checked numerically: it fails on its own, and every set with one
-    /// member less solves. False when the set was read off the Jacobian only.
+    /// Whether the set was shown minimal: it fails on its own, and every set with one member
+    /// less solves. False when that was not shown: a set read off the Jacobian where the
+    /// diagnosis could not solve it alone, a set too large to shrink that fails whole, or one
+    /// a part of which neither solved nor failed alone (its solves were still creeping when
+    /// their iterations ran out), so the member it lacks was kept.
     pub verified: bool,
 }
 
