@@ -142,6 +142,10 @@ export interface Diagnosis {
   rank: number;
   iterations: number;
   residual: number;
+  /**
+   * Sets of constraints that cannot hold together. `verified`: the set was shown minimal (it
+   * fails alone, and without any one member the rest solves); false where that was not shown.
+   */
   conflicting: { members: DiagnosisMember[]; verified: boolean }[];
   redundant: { members: DiagnosisMember[]; excess: number; involved?: DiagnosisMember[] }[];
   freedoms: { entity: EntityId; kind: EntityType; dof: number; [more: string]: unknown }[];
