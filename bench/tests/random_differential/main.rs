@@ -44,7 +44,7 @@ const DEFAULT_SYSTEMS: u64 = 120;
 const PINNED_SEEDS: &[u64] = &[
     203, 310, 311, 516, 599, 806, 833, 844, 850, 976, 991, 1043, 1061, 1186, 1287, 1493, 2473,
     2485, 2830, 3323, 3347, 3364, 3923, 3953, 4204, 4465, 4650, 4996, 7929, 8169, 22011, 25105,
-    59100,
+    59100, 570880, 590044,
 ];
 
 /// Seeds where loci is known to answer wrongly today (or to fail where SolveSpace succeeds),

@@ -118,10 +118,9 @@ fn diagnosed(
         if ran_off(&eqs, &start, report.residual) {
             conflicting.retain(|s| s.members.len() <= minimal::LARGE_SET);
         }
-        conflicting
-            .into_iter()
-            .filter_map(|s| shrunk.failing_alone(sys, group, s, cfg, solutions))
-            .collect::<Vec<_>>()
+        let failed = !report.outcome.is_ok();
+        let mut whole = || failed.then(|| whole_shrunk(&eqs, starts, cfg)).flatten();
+        failing_alone_or_whole(sys, group, conflicting, &mut whole, cfg, &shrunk, solutions).0
     });
     // Nothing fails, and the whole solves from where a set dropped above holds: the solve
     // finds that solution too ([`crate::solve`]), and the diagnosis is of the sketch there.
@@ -368,9 +367,23 @@ pub(crate) fn name_conflicts(
                 whole = Equations::new(sys, group, &start).ok();
             }
             // A set that holds either way is dropped.
-            sets = sets
+            let (failing, in_whole) = failing_alone_or_whole(
+                sys,
+                group,
+                sets,
+                &mut || {
+                    if whole.is_none() {
+                        whole = Equations::new(sys, group, &start).ok();
+                    }
+                    whole_shrunk(whole.as_ref()?, starts, cfg)
+                },
+                cfg,
+                &shrunk,
+                solutions,
+            );
+            searched |= in_whole;
+            sets = failing
                 .into_iter()
-                .filter_map(|s| shrunk.failing_alone(sys, group, s, cfg, solutions))
                 .filter(|s| {
                     !(quick(s)
                         && whole
@@ -731,15 +744,9 @@ fn conflict_sets(
     // sketch against SolveSpace, which names them; 17 such in 5,000).
     let mut whole = false;
     if out.is_empty() && !outcome.is_ok() {
-        let all = members_of(&mut (0..eqs.rows));
-        if all.len() <= WHOLE_SEARCH_LIMIT {
-            let (members, verified) = minimal::minimise(eqs, &all, starts, cfg);
-            // Every member is needed (the set less any one of them solves): evidence even when
-            // the set is all there is.
-            if verified {
-                out.push(ConflictSet { members, verified });
-                whole = true;
-            }
+        if let Some(set) = whole_shrunk(eqs, starts, cfg) {
+            out.push(set);
+            whole = true;
         }
     }
     out.sort_by(|a, b| {
@@ -753,6 +760,64 @@ fn conflict_sets(
         })
     });
     (out, whole)
+}
+
+/// The whole group's equations shrunk by the deletion filter to a minimal set that fails while
+/// each of its parts solves, when the group has at most [`WHOLE_SEARCH_LIMIT`] members. Every
+/// member is needed (the set less any one of them solves): evidence even when the set is all
+/// there is.
+fn whole_shrunk(eqs: &Equations, starts: &[&[f64]], cfg: &Config) -> Option<ConflictSet> {
+    let mut all: Vec<Member> = (0..eqs.rows)
+        .map(|r| eqs.member(eqs.row_kernel[r] as usize))
+        .collect();
+    all.sort_by(Member::report_order);
+    all.dedup();
+    if all.len() > WHOLE_SEARCH_LIMIT {
+        return None;
+    }
+    let (members, verified) = minimal::minimise(eqs, &all, starts, cfg);
+    verified.then_some(ConflictSet { members, verified })
+}
+
+/// The sets of `sets` that fail alone ([`Shrunk::failing_alone`]). Where there were some and
+/// every one holds alone, the solve stopped where a dependence that holds on another branch
+/// read as the conflict: then the set the whole group shrinks to (`whole`, [`whole_shrunk`]), when it
+/// shares no member with those that hold and fails alone too. Seed 590,044 of the random
+/// systems against SolveSpace stopped where a loop of six angles was dependent with residuals
+/// left; alone, the six hold with their angles the other way round, and the conflict, a
+/// midpoint and two distances along its line that cannot agree, showed in no dependence there.
+/// Shrinking the whole group drops the oldest angle of the loop first, and the loop with it,
+/// and ends on the three. A set that shares members with one that holds is left alone: it may
+/// fail near the drawing only where Newton folds the sketch (nine constraints of a pentagon
+/// that close only with the drawing 50 times its size, `tests/sketch_named_conflicts.rs`).
+/// Returns the sets, and whether they came from the whole group.
+#[allow(clippy::too_many_arguments)]
+fn failing_alone_or_whole(
+    sys: &System,
+    group: GroupId,
+    sets: Vec<ConflictSet>,
+    whole: &mut dyn FnMut() -> Option<ConflictSet>,
+    cfg: &Config,
+    shrunk: &Shrunk,
+    solutions: &mut Vec<Vec<f64>>,
+) -> (Vec<ConflictSet>, bool) {
+    let mut held: Vec<Member> = Vec::new();
+    let mut failing = Vec::new();
+    for s in sets {
+        let members = s.members.clone();
+        match shrunk.failing_alone(sys, group, s, cfg, solutions) {
+            Some(f) => failing.push(f),
+            None => held.extend(members),
+        }
+    }
+    if !failing.is_empty() || held.is_empty() {
+        return (failing, false);
+    }
+    let found = whole()
+        .filter(|s| !s.members.iter().any(|m| held.contains(m)))
+        .and_then(|s| shrunk.failing_alone(sys, group, s, cfg, solutions));
+    let from_whole = found.is_some();
+    (found.into_iter().collect(), from_whole)
 }
 
 /// The solver's failed constraints and entities as members.
