@@ -242,8 +242,7 @@ fn a_conflict_whose_smallest_part_creeps_is_named_whole() {
 /// line and two distances along it (the whole line 9.987, from its start to the midpoint
 /// 3.495, where it must be half) cannot agree, beside a loop of six angles, parallels and
 /// perpendiculars. Newton from the drawing stops where that loop is dependent with residuals
-/// left; alone, its six constraints hold (their angles the other way round), and the conflict
-/// shows in no dependence there. The solve and the diagnosis once read `did_not_converge` and
+/// left; alone, its six constraints hold, and the conflict shows in no dependence there. The solve and the diagnosis once read `did_not_converge` and
 /// named nothing, where SolveSpace names the conflict; the whole group, shrunk by the deletion
 /// filter, gives the three.
 #[test]

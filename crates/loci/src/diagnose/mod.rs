@@ -780,16 +780,16 @@ fn whole_shrunk(eqs: &Equations, starts: &[&[f64]], cfg: &Config) -> Option<Conf
 }
 
 /// The sets of `sets` that fail alone ([`Shrunk::failing_alone`]). Where there were some and
-/// every one holds alone, the solve stopped where a dependence that holds on another branch
-/// read as the conflict: then the set the whole group shrinks to (`whole`, [`whole_shrunk`]), when it
+/// every one holds alone, the solve stopped where a dependence that holds elsewhere read as the
+/// conflict: then the set the whole group shrinks to (`whole`, [`whole_shrunk`]), when it
 /// shares no member with those that hold and fails alone too. Seed 590,044 of the random
 /// systems against SolveSpace stopped where a loop of six angles was dependent with residuals
-/// left; alone, the six hold with their angles the other way round, and the conflict, a
-/// midpoint and two distances along its line that cannot agree, showed in no dependence there.
-/// Shrinking the whole group drops the oldest angle of the loop first, and the loop with it,
-/// and ends on the three. A set that shares members with one that holds is left alone: it may
-/// fail near the drawing only where Newton folds the sketch (nine constraints of a pentagon
-/// that close only with the drawing 50 times its size, `tests/sketch_named_conflicts.rs`).
+/// left; alone, the six hold, and the conflict, a midpoint and two distances along its line
+/// that cannot agree, showed in no dependence there. Shrinking the whole group drops the
+/// oldest angle of the loop first, and the loop with it, and ends on the three. A set that
+/// shares members with one that holds is left alone: it may fail near the drawing only where
+/// Newton folds the sketch (nine constraints of a pentagon that close only with the drawing 50
+/// times its size, `tests/sketch_named_conflicts.rs`, fail every check of the core alone).
 /// Returns the sets, and whether they came from the whole group.
 #[allow(clippy::too_many_arguments)]
 fn failing_alone_or_whole(
