@@ -272,3 +272,47 @@ fn an_edited_dimension_drops_only_the_soft_constraints_of_the_arc_in_the_way() {
         assert!(m.residual < TOL, "{id:?}: {m:?}");
     }
 }
+
+/// Random sketch 94,989 with a dimension changed: the distance from fixed point 100 to line
+/// 109 goes from 0 to 1. Line 109 starts where two lines before it, equal and parallel, fold
+/// back on point 100; to hold, they unfold into a straight run. The solve finds its answer
+/// from where the constraints in the way hold alone, and the soft constraints of that solve keep
+/// the lengths of that place: line 107 ends 1.019 long where it was drawn 4.166, and was
+/// reported kept. Every soft constraint reported kept has the value drawn; line 107's is
+/// reported dropped.
+#[test]
+fn a_soft_length_reported_kept_is_the_one_drawn() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/sketch_unfolded_lines.json");
+    let text = std::fs::read_to_string(path).unwrap();
+    let loaded = loci::format::sketch::SketchFile::from_json(&text)
+        .unwrap()
+        .load()
+        .unwrap();
+    let mut s = loaded.sketch;
+    let value = |s: &Sketch, k: Soft| match k {
+        Soft::LineLength(l) => len(s, l),
+        Soft::ArcRadius(a) => s.arc(a).radius,
+        Soft::ArcStart(a) => s.arc(a).start_angle,
+        Soft::ArcEnd(a) => s.arc(a).end_angle,
+    };
+    let drawn: Vec<(Soft, f64)> = s
+        .soft_constraints()
+        .into_iter()
+        .map(|k| (k, value(&s, k)))
+        .collect();
+    let r = s.solve().unwrap();
+    assert_eq!(r.outcome, Outcome::RedundantOkay, "{r:?}");
+    assert!(!r.kept.is_empty());
+    for k in &r.kept {
+        let (_, v) = drawn.iter().find(|(d, _)| d == k).unwrap();
+        assert!(
+            (value(&s, *k) - v).abs() < 1e-8,
+            "{k:?}: {} drawn {v}",
+            value(&s, *k)
+        );
+    }
+    let line_107 = s.as_line(loaded.shapes["line_107"]).unwrap();
+    assert!(r.dropped.contains(&Soft::LineLength(line_107)), "{r:?}");
+    assert!((len(&s, line_107) - 4.166).abs() > 1.0);
+}

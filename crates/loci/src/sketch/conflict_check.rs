@@ -14,7 +14,7 @@
 //! solves with the triangle 60 times its size. The whole sketch then starts again from there,
 //! where the set holds and Newton meets what truly stands in the way.
 
-use super::{Sketch, SketchConstraintId, SketchError, SketchReport};
+use super::{Sketch, SketchConstraintId, SketchError, SketchReport, Soft};
 use crate::solve::Outcome;
 use std::collections::BTreeSet;
 
@@ -24,6 +24,11 @@ const RESTARTS: usize = 2;
 
 /// How many levels down a set that fails alone is checked in turn ([`Sketch::solved_alone`]).
 const NESTED: usize = 1;
+
+/// How far, relative to its size (or to 1, if larger), a soft constraint's value may end from
+/// the one drawn and still be reported kept ([`Sketch::kept_as_drawn`]): a solve holds what it
+/// keeps to its tolerance, 1e-10.
+const KEPT: f64 = 1e-8;
 
 impl Sketch {
     /// `first`, the report of [`Sketch::solve_soft`], or, when the conflict it names (or the
@@ -55,6 +60,13 @@ impl Sketch {
         if !self.cfg.name_conflicts {
             return Ok(r);
         }
+        // What the soft constraints keep as drawn: a solve started again from where a set
+        // holds keeps the lengths and angles of that place.
+        let as_drawn: Vec<(Soft, f64)> = self
+            .soft_constraints()
+            .into_iter()
+            .map(|k| (k, self.soft_value(k)))
+            .collect();
         // Every constraint named or left unsatisfied on the way: where the restarts end short
         // of a solution, the conflict may be among them all rather than in any one set.
         let mut seen: BTreeSet<SketchConstraintId> = BTreeSet::new();
@@ -73,7 +85,7 @@ impl Sketch {
             let drawn = self.values_from(&alone);
             let again = self.solve_soft()?;
             if again.outcome.is_ok() {
-                return Ok(again);
+                return Ok(self.kept_as_drawn(again, &as_drawn));
             }
             for (v, d) in self.sys.values_mut().zip(drawn) {
                 *v = d;
@@ -131,6 +143,35 @@ impl Sketch {
         } else {
             Alone::Failed
         })
+    }
+
+    /// `r`, a solve started again from where a set holds, with every soft constraint it kept
+    /// whose value is no longer the one drawn (`as_drawn`) reported dropped instead: that
+    /// solve kept the length or angle of the place it started from, not the user's. Random
+    /// sketch 94,989 changed: a distance from a fixed point to a line went from 0 to 1, the two
+    /// lines before it folded back on each other had to unfold, and the sketch solved from
+    /// where the constraints in the way held, with line 107 1.019 long where it was drawn
+    /// 4.166; it was reported kept.
+    fn kept_as_drawn(&self, mut r: SketchReport, as_drawn: &[(Soft, f64)]) -> SketchReport {
+        let (kept, moved): (Vec<Soft>, Vec<Soft>) = r.kept.iter().partition(|&&k| {
+            as_drawn
+                .iter()
+                .find(|(s, _)| *s == k)
+                .is_some_and(|&(_, drawn)| {
+                    let now = self.soft_value(k);
+                    let off = match k {
+                        // Degrees, either way round.
+                        Soft::ArcStart(_) | Soft::ArcEnd(_) => {
+                            ((now - drawn + 180.0).rem_euclid(360.0) - 180.0).abs()
+                        }
+                        _ => (now - drawn).abs(),
+                    };
+                    off <= KEPT * drawn.abs().max(1.0)
+                })
+        });
+        r.kept = kept;
+        r.dropped.extend(moved);
+        r
     }
 
     /// Takes every parameter's value from `other` where it has that parameter; returns the

@@ -120,7 +120,7 @@ impl Sketch {
 
     /// What a soft constraint keeps, as drawn now (a length, a radius, or an angle in
     /// degrees).
-    fn soft_value(&self, s: Soft) -> f64 {
+    pub(super) fn soft_value(&self, s: Soft) -> f64 {
         match s {
             Soft::LineLength(l) => {
                 let [p, q] = self.line(l);
