@@ -46,9 +46,10 @@ pub struct SketchReport {
     /// The user constraints the core solver named (redundant, conflicting or unsatisfied),
     /// in the order added.
     pub failed: Vec<SketchConstraintId>,
-    /// Soft constraints that held.
+    /// Soft constraints that held, each at its value as drawn.
     pub kept: Vec<Soft>,
-    /// Soft constraints dropped because they stood in the way.
+    /// Soft constraints dropped because they stood in the way, or that a solve started again
+    /// from elsewhere held at another value than the one drawn.
     pub dropped: Vec<Soft>,
     /// Newton iterations of the last solve.
     pub iterations: usize,
