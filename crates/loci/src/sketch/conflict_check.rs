@@ -14,6 +14,7 @@
 //! solves with the triangle 60 times its size. The whole sketch then starts again from there,
 //! where the set holds and Newton meets what truly stands in the way.
 
+use super::measure::wrap_deg;
 use super::{Sketch, SketchConstraintId, SketchError, SketchReport, Soft};
 use crate::solve::Outcome;
 use std::collections::BTreeSet;
@@ -160,10 +161,7 @@ impl Sketch {
                 .is_some_and(|&(_, drawn)| {
                     let now = self.soft_value(k);
                     let off = match k {
-                        // Degrees, either way round.
-                        Soft::ArcStart(_) | Soft::ArcEnd(_) => {
-                            ((now - drawn + 180.0).rem_euclid(360.0) - 180.0).abs()
-                        }
+                        Soft::ArcStart(_) | Soft::ArcEnd(_) => wrap_deg(now - drawn).abs(),
                         _ => (now - drawn).abs(),
                     };
                     off <= KEPT * drawn.abs().max(1.0)
