@@ -58,7 +58,7 @@ impl Sketch {
         depth: usize,
     ) -> Result<SketchReport, SketchError> {
         let mut r = first;
-        if !self.cfg.name_conflicts {
+        if !self.cfg.name_conflicts || !failed_naming(&r) {
             return Ok(r);
         }
         // What the soft constraints keep as drawn: a solve started again from where a set
@@ -72,9 +72,7 @@ impl Sketch {
         // of a solution, the conflict may be among them all rather than in any one set.
         let mut seen: BTreeSet<SketchConstraintId> = BTreeSet::new();
         for _ in 0..RESTARTS {
-            if !matches!(r.outcome, Outcome::Inconsistent | Outcome::DidNotConverge)
-                || r.failed.is_empty()
-            {
+            if !failed_naming(&r) {
                 return Ok(r);
             }
             seen.extend(r.failed.iter().copied());
@@ -199,6 +197,11 @@ enum Alone {
     Conflict(Vec<SketchConstraintId>),
     /// Neither.
     Failed,
+}
+
+/// Whether `r` failed and named constraints: those to check alone.
+fn failed_naming(r: &SketchReport) -> bool {
+    matches!(r.outcome, Outcome::Inconsistent | Outcome::DidNotConverge) && !r.failed.is_empty()
 }
 
 /// `r`, a solve that failed, reporting `set` as the conflict instead.
