@@ -6,7 +6,8 @@ use crate::gadgets::{self, Gadget};
 use crate::rng::Rng;
 use crate::sketch::{Dim, Sketch, GROUP};
 use crate::steps;
-use loci::{ConstraintId, ParamId, System};
+use loci::{ConstraintId, ConstraintKind as K, EntityKind, ParamId, System};
+use std::sync::OnceLock;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Variant {
@@ -45,8 +46,10 @@ pub struct Case {
     pub switch: Option<(ConstraintId, f64, f64)>,
     /// The gadgets built, in order.
     pub gadgets: Vec<Gadget>,
-    /// The size of the drawing: the largest true coordinate, at least 1.
+    /// The size of the drawing: the largest true coordinate or distance, at least its scale.
     pub size: f64,
+    /// The scale it is drawn at (see [`drawing_scale`]).
+    pub scale: f64,
 }
 
 impl Case {
@@ -86,8 +89,13 @@ pub fn kind_of(seed: u64) -> (Dim, Variant) {
     (dim, variant)
 }
 
-/// Builds the case of `seed`.
+/// Builds the case of `seed`, at the [`drawing_scale`].
 pub fn case(seed: u64) -> Case {
+    case_at(seed, drawing_scale())
+}
+
+/// Builds the case of `seed`, every length `scale` times its length at scale 1.
+pub fn case_at(seed: u64, scale: f64) -> Case {
     let (dim, variant) = kind_of(seed);
     let mut s = Sketch::new(Rng::new(seed), dim);
     let planar = s.planar();
@@ -141,7 +149,87 @@ pub fn case(seed: u64) -> Case {
         }
         steps::step(&mut s);
     }
-    finish(s, seed, variant, plan, planted, switch)
+    finish(s, seed, variant, plan, planted, switch, scale)
+}
+
+/// The scale every case is drawn at: 1, or `LOCI_DIFF_SCALE`. Each length of a case (a
+/// coordinate, a distance, a diameter, a difference of lengths, how far a start is moved off)
+/// is that many times its length at scale 1; angles and ratios are the same. The same systems
+/// drawn in other units: metres (`0.001`) or microns (`1000`) instead of millimetres.
+pub fn drawing_scale() -> f64 {
+    static SCALE: OnceLock<f64> = OnceLock::new();
+    *SCALE.get_or_init(|| {
+        let Ok(v) = std::env::var("LOCI_DIFF_SCALE") else {
+            return 1.0;
+        };
+        match v.trim().parse::<f64>() {
+            Ok(k) if k > 0.0 && k.is_finite() => k,
+            _ => panic!("LOCI_DIFF_SCALE={v}: expected a positive number"),
+        }
+    })
+}
+
+/// Whether a constraint's value is a length (scaled with the drawing) rather than an angle
+/// or a ratio.
+fn value_is_length(kind: K) -> bool {
+    matches!(
+        kind,
+        K::PtPtDistance
+            | K::PtPlaneDistance
+            | K::PtLineDistance
+            | K::PtFaceDistance
+            | K::LengthDifference
+            | K::Diameter
+            | K::ProjPtDistance
+            | K::ArcArcDifference
+            | K::ArcLineDifference
+    )
+}
+
+/// The parameters that are lengths: points' coordinates and distance entities (not a
+/// normal's quaternion).
+fn length_params(sys: &System) -> Vec<ParamId> {
+    sys.entities()
+        .iter()
+        .filter(|e| {
+            matches!(
+                e.kind,
+                EntityKind::PointIn3d { .. }
+                    | EntityKind::PointIn2d { .. }
+                    | EntityKind::Distance { .. }
+            )
+        })
+        .flat_map(|e| e.kind.params().to_vec())
+        .collect()
+}
+
+/// Scales every length of `sys` (points' coordinates, distance entities, length values) by
+/// `k`, and the values of `switch` with its constraint's.
+fn scale_lengths(
+    sys: &mut System,
+    k: f64,
+    switch: &mut Option<(usize, f64, f64)>,
+    handles: &[u32],
+) {
+    for p in length_params(sys) {
+        let v = sys.value(p).expect("an entity's parameter");
+        sys.set_value(p, v * k);
+    }
+    let kinds: Vec<(ConstraintId, K)> = sys.constraints().iter().map(|c| (c.h, c.kind)).collect();
+    for (h, kind) in kinds {
+        if value_is_length(kind) {
+            sys.constraint_mut(h)
+                .expect("a constraint of the system")
+                .val *= k;
+        }
+    }
+    if let Some((i, good, bad)) = switch {
+        let h = ConstraintId(handles[*i]);
+        if sys.constraint(h).is_some_and(|c| value_is_length(c.kind)) {
+            *good *= k;
+            *bad *= k;
+        }
+    }
 }
 
 fn finish(
@@ -150,7 +238,8 @@ fn finish(
     variant: Variant,
     plan: Vec<(Gadget, bool)>,
     planted: Vec<usize>,
-    switch: Option<(usize, f64, f64)>,
+    mut switch: Option<(usize, f64, f64)>,
+    k: f64,
 ) -> Case {
     // Constraints in a random order, numbered 1.. in that order.
     let n = s.cons.len();
@@ -165,6 +254,9 @@ fn finish(
         c.h = ConstraintId(k as u32 + 1);
         s.sys.add_constraint(c).expect("a valid constraint");
     }
+    if k != 1.0 {
+        scale_lengths(&mut s.sys, k, &mut switch, &handle);
+    }
     let truth: Vec<(ParamId, f64)> = s
         .sys
         .params()
@@ -172,14 +264,13 @@ fn finish(
         .filter(|p| p.group.0 == GROUP)
         .map(|p| (p.h, p.val))
         .collect();
-    let size = s
-        .sys
-        .params()
-        .iter()
-        .map(|p| p.val.abs())
-        .fold(1.0f64, f64::max);
-    let start = perturb(&mut s, &truth);
-    let restart = perturb(&mut s, &truth);
+    // Lengths only: a normal's quaternion has entries up to 1 at every scale.
+    let size = length_params(&s.sys)
+        .into_iter()
+        .map(|p| s.sys.value(p).expect("an entity's parameter").abs())
+        .fold(k, f64::max);
+    let start = perturb(&mut s, &truth, k);
+    let restart = perturb(&mut s, &truth, k);
     for &(p, v) in &start {
         s.sys.set_value(p, v);
     }
@@ -194,13 +285,14 @@ fn finish(
         switch: switch.map(|(i, good, bad)| (ConstraintId(handle[i]), good, bad)),
         gadgets: plan.into_iter().map(|(g, _)| g).collect(),
         size,
+        scale: k,
     }
 }
 
 /// A start near the truth: every coordinate moved by a normal deviate of a drawn size (from
 /// a nudge to a tenth of the drawing).
-fn perturb(s: &mut Sketch, truth: &[(ParamId, f64)]) -> Vec<(ParamId, f64)> {
-    let sigma = [0.02, 0.1, 0.3, 1.0][s.rng.below(4)];
+fn perturb(s: &mut Sketch, truth: &[(ParamId, f64)], scale: f64) -> Vec<(ParamId, f64)> {
+    let sigma = [0.02, 0.1, 0.3, 1.0][s.rng.below(4)] * scale;
     truth
         .iter()
         .map(|&(p, v)| (p, v + sigma * s.rng.normal()))

@@ -366,7 +366,7 @@ pub fn resolve(case: &Case) -> Option<Resolve> {
         .expect("the plane's origin");
     for (k, p) in origin.into_iter().enumerate() {
         let v = sys.value(p).unwrap();
-        sys.set_value(p, v + [1.5, -2.0, 0.75][k]);
+        sys.set_value(p, v + [1.5, -2.0, 0.75][k] * case.scale);
     }
     reset(&mut sys, &start);
     resolve_step(case, &mut solver, &mut sys, sat, "plane moved")

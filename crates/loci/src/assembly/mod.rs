@@ -53,8 +53,9 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Options {
-    /// Positional tolerance: a mate holds when its relations are within this (model units).
-    /// Default `1e-10`.
+    /// Positional tolerance: a mate holds when its relations are within this (model units),
+    /// or within the rounding of world positions for components far from the origin
+    /// ([`crate::Config::tolerance_at`]). Default `1e-10`.
     pub tolerance: f64,
     /// Angular tolerance in radians for reporting angle mates; without it, ten times
     /// `tolerance`, never below [`ANGLE_TOLERANCE`]. Default none.
@@ -268,6 +269,30 @@ impl Assembly {
 
     fn angle_tol(&self) -> f64 {
         angle::angle_tolerance(self.options.angle_tolerance, self.options.tolerance)
+    }
+
+    /// The tolerance a mate's positional error is held to: [`AssemblyOptions::tolerance`], or,
+    /// for components so far from the origin that world positions cannot be stored that
+    /// finely, their rounding, as the solver holds its residuals to it
+    /// ([`crate::Config::tolerance_at`]; a coincident mate 1e7 from the origin is met to
+    /// 9.3e-10 at best). Angles are measured between unit directions, whose rounding does not
+    /// grow with the distance.
+    fn position_tol(&self) -> f64 {
+        let largest = |v: [f64; 3]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let size = self
+            .components
+            .iter()
+            .map(|c| {
+                let reach = c
+                    .references
+                    .iter()
+                    .fold(0.0f64, |m, (_, r)| m.max(largest(r.point())));
+                largest(c.pose.translation) + reach
+            })
+            .fold(0.0f64, f64::max);
+        crate::Config::default()
+            .with_tolerance(self.options.tolerance)
+            .tolerance_at(size)
     }
 
     /// The seed's measurement of angle mate `id` at the current poses, also kept in its

@@ -59,7 +59,7 @@ impl Assembly {
         let compiled = self.compile_all();
         let start = self.poses();
         let movable = self.movable();
-        let tol = self.options.tolerance;
+        let tol = self.position_tol();
         let atol = self.angle_tol();
         let within = |p: &Prim, e: f64| e <= if p.is_angular() { atol } else { tol };
         let err_of = |prims: &[Prim], poses: &[Pose]| -> (f64, bool) {

@@ -225,7 +225,7 @@ impl Assembly {
             rotation_gain: self.options.rotation_gain.clamp(0.0, 1.0),
             max_rotation: self.options.max_rotation_per_iteration,
         };
-        let tol = self.options.step_tolerance.max(self.options.tolerance);
+        let tol = self.options.step_tolerance.max(self.position_tol());
         let atol = self.angle_tol().max(tol);
         let errors = |poses: &[Pose]| -> (Vec<f64>, bool) {
             let w = World { poses };

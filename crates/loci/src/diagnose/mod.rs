@@ -72,6 +72,7 @@ fn diagnosed(
 ) -> Result<Diagnosis, SolveError> {
     cfg.check()?;
     sys.validate()?;
+    let cfg = &*cfg.for_group(sys, group);
     let start: Vec<f64> = sys.params().iter().map(|p| p.val).collect();
     let eqs = Equations::new(sys, group, &start)?;
 

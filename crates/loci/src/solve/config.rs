@@ -1,11 +1,15 @@
 //! Solver settings.
 
+use std::borrow::Cow;
+
 /// How a solve runs. Every field has a documented default; build with the `with_*` methods.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct Config {
     /// A constraint holds when every residual is at most this (in model units: millimetres
-    /// for lengths; radians-like for angle rows). Default `1e-10`.
+    /// for lengths; radians-like for angle rows). Default `1e-10`. On a drawing so large
+    /// that its values cannot be stored this finely, the rounding of its values instead
+    /// (see [`Config::tolerance_at`]).
     pub tolerance: f64,
     /// Newton iterations per component before giving up. Default `1000`: a solve that makes
     /// progress towards a solution is not cut short (a sketch near a singular configuration
@@ -103,7 +107,53 @@ impl Default for Config {
     }
 }
 
+/// How finely a residual can be computed, relative to the size of the values it reads. A
+/// value of size `s` is stored to within `f64::EPSILON * s / 2`, and an equation combines
+/// a few of them, its terms a few times larger than the values: a site plan drawn in
+/// millimetres a kilometre from its origin stores its coordinates to 1.2e-10, and no step
+/// brings a distance between two of them within the default tolerance of 1e-10.
+pub(crate) const ROUNDING: f64 = 32.0 * f64::EPSILON;
+
+/// The most the rounding of a drawing's values raises the tolerance to (SolveSpace's own
+/// length epsilon), reached at a size of 1.4e8. The size is that of the largest value of a
+/// group: one stray value of 1e50 must not excuse errors of the rest of its group larger
+/// than this, and a drawing larger still cannot be solved to a useful precision anyway.
+const ROUNDING_CAP: f64 = 1e-6;
+
 impl Config {
+    /// The tolerance residuals are held to on a drawing whose values are at most `size` in
+    /// magnitude: [`Config::tolerance`], or the rounding of such values (32 `f64::EPSILON`
+    /// times `size`, at most 1e-6) where that is larger. The default tolerance stands up to a
+    /// size of about 14,000 (14 m in millimetres); at a million, 7.1e-9.
+    ///
+    /// ```
+    /// let cfg = loci::Config::default();
+    /// assert_eq!(cfg.tolerance_at(1000.0), 1e-10);
+    /// assert_eq!(cfg.tolerance_at(1e6), 32.0 * f64::EPSILON * 1e6);
+    /// assert_eq!(cfg.tolerance_at(1e50), 1e-6);
+    /// ```
+    #[must_use]
+    pub fn tolerance_at(&self, size: f64) -> f64 {
+        self.tolerance.max((ROUNDING * size).min(ROUNDING_CAP))
+    }
+
+    /// This configuration with its tolerance at the size of the values of `group` of `sys`
+    /// (see [`Config::tolerance_at`]): what every solve and diagnosis of the group holds its
+    /// residuals to.
+    pub(crate) fn for_group(&self, sys: &crate::System, group: crate::GroupId) -> Cow<'_, Self> {
+        let size = sys
+            .params()
+            .iter()
+            .filter(|p| p.group == group)
+            .fold(0.0f64, |m, p| m.max(p.val.abs()));
+        let tol = self.tolerance_at(size);
+        if tol == self.tolerance {
+            Cow::Borrowed(self)
+        } else {
+            Cow::Owned(self.clone().with_tolerance(tol))
+        }
+    }
+
     /// Sets [`Config::nearest`].
     #[must_use]
     pub fn with_nearest(mut self, v: bool) -> Self {

@@ -71,8 +71,9 @@ pub fn solve(
     cfg.check()?;
     sys.validate()?;
     check_group(sys, group)?;
+    let cfg = cfg.for_group(sys, group);
     let mut cache = Cache::default();
-    let report = solve_cached(sys, group, dragged, cfg, &mut cache);
+    let report = solve_cached(sys, group, dragged, &cfg, &mut cache);
     cache.discard();
     report
 }
@@ -88,6 +89,7 @@ pub(crate) fn solve_core(
     cfg.check()?;
     sys.validate()?;
     check_group(sys, group)?;
+    let cfg = &*cfg.for_group(sys, group);
     let mut cache = Cache::default();
     let (report, values, _) = solve_values_checked(sys, group, dragged, cfg, &mut cache)?;
     if !report.outcome.is_ok() {
@@ -195,7 +197,8 @@ impl Solver {
             // Values may have changed since: they must still be numbers.
             sys.validate_values()?;
         }
-        solve_cached(sys, self.group, &self.dragged, &self.cfg, &mut self.cache)
+        let cfg = self.cfg.for_group(sys, self.group);
+        solve_cached(sys, self.group, &self.dragged, &cfg, &mut self.cache)
     }
 }
 
