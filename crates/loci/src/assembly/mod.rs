@@ -271,7 +271,7 @@ impl Assembly {
         angle::angle_tolerance(self.options.angle_tolerance, self.options.tolerance)
     }
 
-    /// The tolerance a mate's positional error is held to: [`AssemblyOptions::tolerance`], or,
+    /// The tolerance a mate's positional error is held to: [`Options::tolerance`], or,
     /// for components so far from the origin that world positions cannot be stored that
     /// finely, their rounding, as the solver holds its residuals to it
     /// ([`crate::Config::tolerance_at`]; a coincident mate 1e7 from the origin is met to
