@@ -26,6 +26,7 @@ mod rank_tests;
 mod report;
 mod rescue;
 mod runaway;
+mod scattered_memo;
 #[cfg(test)]
 mod slide_tests;
 mod substitute;

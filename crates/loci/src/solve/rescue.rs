@@ -101,6 +101,7 @@ pub(crate) fn holds_scattered(sys: &System, group: GroupId, cfg: &Config) -> Opt
 }
 
 /// What the solves of [`holds_scattered`] found.
+#[derive(Clone)]
 pub(crate) enum Scattered {
     /// A solution: the values of every parameter of the system there.
     Held(Vec<f64>),
@@ -121,6 +122,16 @@ pub(crate) fn checked_scattered(sys: &System, group: GroupId, cfg: &Config) -> S
     if sys.validate().is_err() || check_group(sys, group).is_err() {
         return Scattered::Failed;
     }
+    // Its solves name no conflicts, whatever the caller's configuration says.
+    let cfg = &Config {
+        name_conflicts: false,
+        ..cfg.clone()
+    };
+    super::scattered_memo::remembered(sys, group, cfg, || scattered(sys, group, cfg))
+}
+
+/// [`checked_scattered`] of a valid group, found afresh.
+fn scattered(sys: &System, group: GroupId, cfg: &Config) -> Scattered {
     let rounds = if constraints_of(sys, group) <= SMALL_GROUP {
         SMALL_ROUNDS
     } else {
